@@ -1,0 +1,215 @@
+"""Diagnostics: the one error family of spinemu and how it is rendered.
+
+Every error the library raises for bad input is a :class:`SpinError` (or a
+subclass).  It carries one or more :class:`Diagnostic` records, each with a
+path, a 1-based line and column and the source line, and renders in the
+GCC layout that editors understand::
+
+    stepper.spin:41:9: error: unknown symbol 'numStep'
+        if (numStep-- > 0)
+            ^
+
+This module is a shared leaf: it imports nothing from the project.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Iterable, Optional
+
+__all__ = [
+    "Diagnostic",
+    "SpinError",
+    "ParseError",
+    "CompileError",
+    "ImageError",
+    "EmulationError",
+    "UsageError",
+    "DiagnosticBag",
+    "source_line_at",
+]
+
+
+@dataclass(frozen=True)
+class Diagnostic:
+    """One message about one place in one file.
+
+    Args:
+        message: the text, in the user's words.
+        path: the file it is about (``None`` when not about a file).
+        line: 1-based line number, or ``None``.
+        column: 1-based column number, or ``None``.
+        source_line: the text of that line, exactly as in the file.
+        severity: ``"error"``, ``"warning"`` or ``"note"``.
+        length: how many characters the caret underline covers (at least 1).
+
+    >>> d = Diagnostic("unknown symbol 'numStep'", "stepper.spin", 41, 9,
+    ...                "    if (numStep-- > 0)")
+    >>> print(d.render())
+    stepper.spin:41:9: error: unknown symbol 'numStep'
+        if (numStep-- > 0)
+            ^
+    """
+
+    message: str
+    path: Optional[str] = None
+    line: Optional[int] = None
+    column: Optional[int] = None
+    source_line: Optional[str] = None
+    severity: str = "error"
+    length: int = 1
+
+    def location(self) -> str:
+        """``path:line:col`` (as much of it as is known)."""
+        parts = [self.path or "<input>"]
+        if self.line is not None:
+            parts.append(str(self.line))
+            if self.column is not None:
+                parts.append(str(self.column))
+        return ":".join(parts)
+
+    def render(self) -> str:
+        """The message, the source line and a caret under the column."""
+        out = [f"{self.location()}: {self.severity}: {self.message}"]
+        if self.source_line is not None and self.column is not None:
+            text = self.source_line.rstrip("\r\n")
+            out.append(text)
+            # Keep tabs so the caret lines up however the terminal expands them.
+            prefix = "".join("\t" if ch == "\t" else " " for ch in text[: self.column - 1])
+            width = max(1, min(self.length, max(1, len(text) - self.column + 1)))
+            out.append(prefix + "^" + "~" * (width - 1))
+        return "\n".join(out)
+
+
+class SpinError(Exception):
+    """Bad input: one or more diagnostics.  The CLI renders it and exits 1.
+
+    Args:
+        message: the first (or only) diagnostic's text.
+        path, line, column, source_line: where it is, if known.
+        diagnostics: several diagnostics at once (``message`` is then ignored
+            unless no diagnostics are given).
+
+    >>> e = SpinError("missing object file 'stepper.spin'", path="demo.spin", line=3)
+    >>> print(e)
+    demo.spin:3: error: missing object file 'stepper.spin'
+    """
+
+    exit_status = 1
+
+    def __init__(
+        self,
+        message: str = "",
+        *,
+        path: Optional[str] = None,
+        line: Optional[int] = None,
+        column: Optional[int] = None,
+        source_line: Optional[str] = None,
+        length: int = 1,
+        diagnostics: Optional[Iterable[Diagnostic]] = None,
+    ):
+        diags = list(diagnostics) if diagnostics else []
+        if not diags:
+            diags = [Diagnostic(message, path, line, column, source_line, "error", length)]
+        self.diagnostics: list[Diagnostic] = diags
+        super().__init__(self.render())
+
+    @property
+    def first(self) -> Diagnostic:
+        return self.diagnostics[0]
+
+    @property
+    def message(self) -> str:
+        return self.first.message
+
+    @property
+    def path(self) -> Optional[str]:
+        return self.first.path
+
+    @property
+    def line(self) -> Optional[int]:
+        return self.first.line
+
+    @property
+    def column(self) -> Optional[int]:
+        return self.first.column
+
+    def render(self) -> str:
+        return "\n".join(d.render() for d in self.diagnostics)
+
+    def __str__(self) -> str:  # pragma: no cover - trivial
+        return self.render()
+
+
+class ParseError(SpinError):
+    """The source does not follow the language's grammar."""
+
+
+class CompileError(SpinError):
+    """The source parses but cannot be compiled (unknown name, bad constant...)."""
+
+
+class ImageError(SpinError):
+    """A ``.binary``/``.eeprom`` image that cannot be loaded."""
+
+
+class EmulationError(SpinError):
+    """A run-time fault inside the emulated chip (names cog, address and source line)."""
+
+
+class UsageError(SpinError):
+    """Wrong command-line arguments: exit status 2."""
+
+    exit_status = 2
+
+
+@dataclass
+class DiagnosticBag:
+    """Collects diagnostics so that one run can report several errors.
+
+    >>> bag = DiagnosticBag()
+    >>> bag.error("unknown symbol 'x'", "a.spin", 2, 3, "  x := 1")
+    >>> bag.has_errors
+    True
+    >>> bag.raise_if_errors(CompileError)
+    Traceback (most recent call last):
+    ...
+    spinemu.diagnostics.CompileError: a.spin:2:3: error: unknown symbol 'x'
+      x := 1
+      ^
+    """
+
+    items: list[Diagnostic] = field(default_factory=list)
+
+    def add(self, diag: Diagnostic) -> None:
+        self.items.append(diag)
+
+    def error(self, message, path=None, line=None, column=None, source_line=None, length=1) -> None:
+        self.items.append(Diagnostic(message, path, line, column, source_line, "error", length))
+
+    def warning(self, message, path=None, line=None, column=None, source_line=None, length=1) -> None:
+        self.items.append(Diagnostic(message, path, line, column, source_line, "warning", length))
+
+    @property
+    def has_errors(self) -> bool:
+        return any(d.severity == "error" for d in self.items)
+
+    @property
+    def warnings(self) -> list[Diagnostic]:
+        return [d for d in self.items if d.severity == "warning"]
+
+    def raise_if_errors(self, cls: type = SpinError) -> None:
+        errors = [d for d in self.items if d.severity == "error"]
+        if errors:
+            raise cls(diagnostics=errors)
+
+
+def source_line_at(text: str, line: int) -> Optional[str]:
+    """The 1-based ``line`` of ``text`` without its line ending, or ``None``.
+
+    >>> source_line_at("a\\nbc\\n", 2)
+    'bc'
+    """
+    lines = text.splitlines()
+    if 1 <= line <= len(lines):
+        return lines[line - 1]
+    return None
