@@ -1,0 +1,337 @@
+"""PBASIC 2.5 source -> :class:`.nodes.Program` (flat statements with positions).
+
+Loads ``grammars/pbasic.lark`` once (LALR, contextual lexer, Lark's grammar
+cache), runs the directive scan and conditional compilation of
+:mod:`.preprocess`, parses, and turns Lark's tree into :mod:`.nodes`.  Parse
+errors become :class:`~spinemu.diagnostics.ParseError` with ``file:line:col``
+and messages in PBASIC words (never Lark terminal names).
+"""
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+from pathlib import Path
+from typing import Optional
+
+from lark import Lark, Token, Transformer, Tree, v_args
+from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
+
+from ..diagnostics import ParseError, source_line_at
+from . import messages as M
+from . import nodes as N
+from .preprocess import conditional_compile, scan_directives
+from .words import OTHER_STAMP_COMMANDS, RESERVED
+
+__all__ = ["parse_source", "parse_file", "parse_condition", "grammar_path", "get_parser",
+           "read_source"]
+
+_CMP_NORMAL = {"=<": "<=", "=>": ">=", "><": "<>"}
+
+
+def grammar_path() -> Path:
+    """``grammars/pbasic.lark`` in the repository, or inside the installed package."""
+    here = Path(__file__).resolve().parent
+    for cand in (here.parent / "grammars" / "pbasic.lark",
+                 here.parent.parent / "grammars" / "pbasic.lark"):
+        if cand.exists():
+            return cand
+    raise FileNotFoundError("grammars/pbasic.lark not found")
+
+
+@lru_cache(maxsize=1)
+def get_parser() -> Lark:
+    """The LALR parser (built once per process; Lark caches the analysed grammar on disk)."""
+    return Lark(grammar_path().read_text(), parser="lalr", lexer="contextual",
+                start=["start", "cond"], propagate_positions=True, maybe_placeholders=True,
+                cache=True)
+
+
+def read_source(path: str) -> str:
+    """A source file as text: UTF-8 if it decodes, otherwise Windows-1252 (the Stamp editor's)."""
+    data = Path(path).read_bytes()
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError:
+        return data.decode("cp1252", errors="replace")
+
+
+def parse_file(path: str) -> N.Program:
+    return parse_source(read_source(path), str(path))
+
+
+def parse_source(text: str, path: str = "<input>") -> N.Program:
+    """Parse a whole PBASIC file.
+
+    Raises:
+        ParseError: missing/unsupported directives, conditional-compilation
+            errors, or a syntax error.
+    """
+    text = text.replace("\r\n", "\n").replace("\r", "\n")
+    if not text.endswith("\n"):
+        text += "\n"
+    directives = scan_directives(text, path)
+    body = conditional_compile(text, path, directives, _pp_evaluate(path))
+    tree = _parse(body, "start", path, text)
+    prog = N.Program(path=path, source=text, stamp=directives.stamp or "BS2",
+                     language=directives.language)
+    prog.items = _Builder(text).transform(tree)
+    return prog
+
+
+def parse_condition(text: str, path: str = "<input>", line: int = 1, column: int = 1,
+                    source: Optional[str] = None):
+    """Parse one PBASIC condition (used by ``#IF``); positions are shifted to ``line:column``."""
+    padded = "\n" * (line - 1) + " " * (column - 1) + text
+    tree = _parse(padded, "cond", path, source or padded)
+    return _Builder(source or padded).transform(tree)
+
+
+def _pp_evaluate(path: str):
+    def evaluate(expr_text: str, line: int, column: int, symbols: dict) -> int:
+        from .exprs import eval_const   # late import: exprs needs nodes only
+        node = parse_condition(expr_text, path, line, column)
+        return eval_const(node, lambda name: symbols.get(name.upper(), 0), path=path)
+    return evaluate
+
+
+# ---------------------------------------------------------------- errors
+
+_TERMINAL_WORDS = {
+    "_NL": "end of line", "COLON": "':'", "_COMMA": "','", "LPAR": "'('", "RPAR": "')'",
+    "LSQB": "'['", "RSQB": "']'", "EQUAL": "'='", "DOT": "'.'", "QMARK": "'?'",
+    "BACKSLASH": "'\\'", "AT": "'@'", "NAME": "a name", "STRING": "a string",
+    "BINOP": "a binary operator", "MINUS": "'-'", "UNOP": "a unary operator",
+    "CMPOP": "a comparison operator", "LOGOP": "AND, OR or XOR", "FORMATTER": "a formatter",
+    "KOP": "'+ - * / << >> & | ^'", "VARTYPE": "Bit, Nib, Byte or Word",
+    "LOOPTEST": "WHILE or UNTIL", "WORD": "'Word'",
+}
+_OPERAND = {"NAME", "DECNUM", "HEXNUM", "BINNUM", "STRING", "LPAR", "UNOP", "MINUS"}
+_WORD_AT_END = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)\s*$")
+_OPERATOR_WORDS = {w for w, what in RESERVED.items()
+                   if "operator" in what or "formatter" in what}
+
+
+def _describe_expected(expected: set) -> str:
+    parts = []
+    names = set(expected)
+    if names & {"NAME", "DECNUM"} and names & {"UNOP", "LPAR", "MINUS"}:
+        parts.append("a constant, variable, unary operator, or '('")
+        names -= _OPERAND
+    elif names & {"DECNUM", "HEXNUM", "BINNUM"}:
+        parts.append("a constant")
+        names -= {"DECNUM", "HEXNUM", "BINNUM", "STRING", "NAME"}
+    if {"_NL", "COLON"} & names:
+        parts.append("':' or end of line")
+        names -= {"_NL", "COLON"}
+    for n in sorted(names):
+        word = _TERMINAL_WORDS.get(n)
+        if word is None:
+            word = f"'{n}'" if n.isalpha() else None
+        if word and word not in parts:
+            parts.append(word)
+    if not parts:
+        return "something else"
+    if len(parts) > 5:
+        parts = parts[:5]
+    return parts[0] if len(parts) == 1 else ", ".join(parts[:-1]) + " or " + parts[-1]
+
+
+def _found(tok: Token) -> str:
+    if tok.type == "_NL" or tok.type == "$END":
+        return "end of line"
+    return "'" + str(tok.value).split("\n")[0].rstrip(",") + "'"
+
+
+def _statement_start_word(line_text: str, col: int) -> Optional[tuple[str, int]]:
+    """The first word of the statement containing column ``col`` (1-based)."""
+    segment_start = 0
+    in_str = False
+    for i, ch in enumerate(line_text[:col - 1]):
+        if ch == '"':
+            in_str = not in_str
+        elif ch == ":" and not in_str:
+            segment_start = i + 1
+        elif ch == "'" and not in_str:
+            break
+    m = re.match(r"\s*([A-Za-z_][A-Za-z0-9_]*)", line_text[segment_start:])
+    if not m:
+        return None
+    return m.group(1), segment_start + m.start(1) + 1
+
+
+def _parse(text: str, start: str, path: str, original: str) -> Tree:
+    try:
+        return get_parser().parse(text, start=start)
+    except UnexpectedInput as e:
+        raise _syntax_error(e, text, path, original) from None
+
+
+def _syntax_error(e: UnexpectedInput, text: str, path: str, original: str) -> ParseError:
+    line = getattr(e, "line", 1) or 1
+    col = getattr(e, "column", 1) or 1
+    src = source_line_at(original, line) or source_line_at(text, line) or ""
+    length = 1
+
+    def err(msg: str, c: int = col, n: int = length) -> ParseError:
+        return ParseError(msg, path=path, line=line, column=c, source_line=src, length=n)
+
+    if isinstance(e, UnexpectedCharacters):
+        ch = text[e.pos_in_stream] if e.pos_in_stream < len(text) else "?"
+        return err(M.UNEXPECTED_CHAR.format(ch))
+    tok = getattr(e, "token", None)
+    expected = set(getattr(e, "expected", None) or getattr(e, "accepts", None) or ())
+    if isinstance(e, UnexpectedEOF) or tok is None:
+        return err(M.UNEXPECTED.format(_describe_expected(expected), "end of file"))
+    if tok.type not in ("_NL", "$END"):
+        length = max(1, len(str(tok.value).split("\n")[0].rstrip(",")))
+    # Commands of other Stamps ('I2CIN 1, ...').
+    first = _statement_start_word(src, col)
+    if first and first[0].upper() in OTHER_STAMP_COMMANDS:
+        word, c = first
+        return err(M.OTHER_STAMP_COMMAND.format(word.upper(), OTHER_STAMP_COMMANDS[word.upper()]),
+                   c, len(word))
+    # A comparison or AND/OR/NOT outside a condition: x = a > b.
+    if tok.type in ("CMPOP", "LOGOP", "NOT") and tok.type not in expected:
+        return err(M.COMPARE_OUTSIDE_CONDITION.format(str(tok.value).upper()))
+    if tok.type == "IF":
+        return err(M.NESTED_INLINE_IF)
+    if tok.type == "ELSE" and expected <= {"_NL", "COLON"}:
+        return err(M.ELSE_AFTER_LABEL)
+    # An operator word where a value was wanted ('x = ATN 4'): blame the word.
+    m = _WORD_AT_END.search(src[:col - 1])
+    if m and m.group(1).upper() in _OPERATOR_WORDS:
+        word = m.group(1)
+        return err(M.RESERVED_AS_VALUE.format(word.upper(), RESERVED[word.upper()]),
+                   m.start(1) + 1, len(word))
+    return err(M.UNEXPECTED.format(_describe_expected(expected), _found(tok)))
+
+
+# ---------------------------------------------------------------- tree -> nodes
+
+def _tpos(tok: Token) -> N.Pos:
+    text = str(tok.value).split("\n")[0]
+    return N.Pos(tok.line, tok.column, max(1, len(text)))
+
+
+def _mpos(meta) -> N.Pos:
+    if getattr(meta, "empty", False):
+        return N.Pos(1, 1)
+    length = meta.end_column - meta.column if meta.end_line == meta.line else 1
+    return N.Pos(meta.line, meta.column, max(1, length))
+
+
+def _number(tok: Token) -> int:
+    s = str(tok.value)
+    if s.startswith("$"):
+        return int(s[1:], 16)
+    if s.startswith("%"):
+        return int(s[1:], 2)
+    return int(s)
+
+
+def leftmost_pos(e) -> N.Pos:
+    """Position of the first character of an expression."""
+    while isinstance(e, (N.Binary, N.Compare, N.Logic)):
+        e = e.left
+    return e.pos
+
+
+@v_args(meta=True)
+class _Builder(Transformer):
+    """Lark tree -> list of nodes.Stmt / nodes.Label (and expressions)."""
+
+    def __init__(self, source: str):
+        super().__init__(visit_tokens=False)
+        self._lines = source.split("\n")
+
+    def _text(self, pos: N.Pos) -> str:
+        if 1 <= pos.line <= len(self._lines):
+            return self._lines[pos.line - 1][pos.column - 1: pos.column - 1 + pos.length]
+        return ""
+
+    # ---- program structure
+    def start(self, meta, children):
+        return [c for c in children if c is not None]
+
+    def label(self, meta, children):
+        tok = children[0]
+        return N.Label(str(tok), _tpos(tok))
+
+    def __default__(self, data, children, meta):
+        pos = _mpos(meta)
+        return N.Stmt(str(data), pos, tuple(children), self._text(pos))
+
+    def then_part(self, meta, children):
+        return list(children)
+
+    goto_part = then_part
+    else_part = then_part
+
+    # ---- expressions
+    def number(self, meta, children):
+        tok = children[0]
+        return N.Num(_number(tok), str(tok), _tpos(tok))
+
+    def string(self, meta, children):
+        tok = children[0]
+        return N.Str(str(tok)[1:-1], _tpos(tok))
+
+    def ref(self, meta, children):
+        names = [c for c in children if isinstance(c, Token)]
+        index = children[-1] if children and not isinstance(children[-1], Token) else None
+        first = names[0]
+        mods = tuple((str(t), _tpos(t)) for t in names[1:])
+        return N.Ref(str(first), _tpos(first), mods, index)
+
+    def binop(self, meta, children):
+        left, op, right = children
+        return N.Binary(str(op).upper(), left, right, _tpos(op))
+
+    def unop(self, meta, children):
+        op, operand = children
+        return N.Unary(str(op).upper(), operand, _tpos(op))
+
+    def compare(self, meta, children):
+        left, op, right = children
+        o = str(op)
+        return N.Compare(_CMP_NORMAL.get(o, o), left, right, _tpos(op))
+
+    def logic(self, meta, children):
+        left, op, right = children
+        return N.Logic(str(op).upper(), left, right, _tpos(op))
+
+    def not_(self, meta, children):
+        pos = _mpos(meta)
+        return N.Not(children[0], N.Pos(pos.line, pos.column, 3))
+
+    # ---- constant expressions (CON, DATA): the same nodes, left to right
+    def kexpr(self, meta, children):
+        acc = children[0]
+        for i in range(1, len(children), 2):
+            op = children[i]
+            acc = N.Binary(str(op).upper(), acc, children[i + 1], _tpos(op))
+        return acc
+
+    def kterm(self, meta, children):
+        minus, atom = children
+        if minus is None:
+            return atom
+        return N.Unary("-", atom, _tpos(minus))
+
+    def kname(self, meta, children):
+        tok = children[0]
+        return N.Ref(str(tok), _tpos(tok))
+
+    # ---- pieces of statements that are not statements
+    def _piece(kind):
+        def build(self, meta, children):
+            pos = _mpos(meta)
+            return N.Stmt(kind, pos, tuple(children), self._text(pos))
+        return build
+
+    for _k in ("data_at", "data_value", "data_reserve", "case_eq", "case_cmp", "case_range",
+               "read_item", "write_item", "xout_item", "shout_item", "shin_item",
+               "out_value", "out_fmt", "out_fmt_show", "out_show", "out_asc_show", "out_str",
+               "out_rep", "in_byte", "in_fmt", "in_str", "in_waitstr", "in_wait", "in_skip"):
+        locals()[_k] = _piece(_k)
+    del _k, _piece
