@@ -497,7 +497,7 @@ def _reg_text(addr: int, symbols: Mapping[int, str]) -> str:
 
 
 def disassemble(word: int, address: Optional[int] = None,
-                symbols: Optional[Mapping[int, str]] = None) -> str:
+                symbols: Optional[Mapping[int, str]] = None, *, ret_as_jmp: bool = False) -> str:
     """One instruction long as PASM text, in columns.
 
     Columns: label (only when ``address`` is given: the symbol at that
@@ -512,6 +512,9 @@ def disassemble(word: int, address: Optional[int] = None,
         symbols: cog address -> name, used for register operands, for the
             immediate targets of jumps, and to show ``call #name`` when the
             destination is ``name_ret`` (otherwise ``jmpret name_ret, #name``).
+        ret_as_jmp: show the ``ret`` long (``$5C7C0000`` and its conditional
+            forms) as ``jmp #$000``, the same long; for callers that know it is
+            no subroutine return.
 
     >>> disassemble(0xE6D40A02)
     'if_nz        djnz    $005, #$002 wz'
@@ -536,6 +539,8 @@ def disassemble(word: int, address: Optional[int] = None,
     src = ("#" if d.immediate else "") + src
     dst = _reg_text(d.dest, symbols)
     form = ins.operands
+    if mnem == "ret" and ret_as_jmp:
+        mnem, form, src = "jmp", SRC, "#" + (symbols.get(0) or "$000")
     if mnem == "jmpret" and d.immediate and d.writes and d.src in symbols \
             and symbols.get(d.dest, "").lower() == symbols[d.src].lower() + "_ret":
         mnem, form = "call", SRC
