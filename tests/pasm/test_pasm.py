@@ -132,3 +132,12 @@ def test_docs_examples_run():
     result = doctest.testfile(str(doc), module_relative=False,
                               optionflags=doctest.IGNORE_EXCEPTION_DETAIL | doctest.ELLIPSIS)
     assert result.attempted >= 15 and result.failed == 0
+
+
+def test_ret_long_can_be_shown_as_jmp_to_zero():
+    ret = pasm.encode("ret", condition="if_c")
+    assert ret == pasm.encode("jmp", condition="if_c", src=0, immediate=True)
+    assert pasm.disassemble(ret).split() == ["if_c", "ret"]
+    assert pasm.disassemble(ret, ret_as_jmp=True).split() == ["if_c", "jmp", "#$000"]
+    assert pasm.disassemble(ret, symbols={0: "entry"}, ret_as_jmp=True).split() == ["if_c", "jmp", "#entry"]
+    assert pasm.assemble_line(pasm.disassemble(ret, ret_as_jmp=True)) == ret
