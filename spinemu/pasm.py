@@ -155,7 +155,9 @@ class Instruction:
         cycles: clock cycles as the Propeller Manual v1.2 gives them
             (``"4/8"``: 4 when it jumps, 8 when not; ``"8..23"``: hub access;
             ``"6+"``: at least).
-        doc: result and flags in one line.
+        doc: result and flags in one line (Z is ``result == 0`` where not
+            said; for the ALU instructions checked against the vectors in
+            tests/data/pasm/alu_vectors.txt).
     """
 
     mnemonic: str
@@ -218,17 +220,17 @@ _TABLE = [
     ("rol", 0b001001, 0b0010, BOTH, "alu", "4", "D = D rotated left by S[4..0]; C = D[31]"),
     ("shr", 0b001010, 0b0010, BOTH, "alu", "4", "D = D >> S[4..0] (logical); C = D[0]"),
     ("shl", 0b001011, 0b0010, BOTH, "alu", "4", "D = D << S[4..0]; C = D[31]"),
-    ("rcr", 0b001100, 0b0010, BOTH, "alu", "4", "D = D >> S[4..0], C shifted in; C = D[0]"),
-    ("rcl", 0b001101, 0b0010, BOTH, "alu", "4", "D = D << S[4..0], C shifted in; C = D[31]"),
+    ("rcr", 0b001100, 0b0010, BOTH, "alu", "4", "D = D >> S[4..0], vacated bits = C; C = D[0]"),
+    ("rcl", 0b001101, 0b0010, BOTH, "alu", "4", "D = D << S[4..0], vacated bits = C; C = D[31]"),
     ("sar", 0b001110, 0b0010, BOTH, "alu", "4", "D = D >> S[4..0] (arithmetic); C = D[0]"),
     ("rev", 0b001111, 0b0010, BOTH, "alu", "4", "D = low 32-S[4..0] bits of D reversed, rest 0; C = D[0]"),
-    ("mins", 0b010000, 0b0010, BOTH, "alu", "4", "D = max(D, S) signed; C = D < S signed"),
-    ("maxs", 0b010001, 0b0010, BOTH, "alu", "4", "D = min(D, S) signed; C = D < S signed"),
-    ("min", 0b010010, 0b0010, BOTH, "alu", "4", "D = max(D, S) unsigned; C = D < S unsigned"),
-    ("max", 0b010011, 0b0010, BOTH, "alu", "4", "D = min(D, S) unsigned; C = D < S unsigned"),
-    ("movs", 0b010100, 0b0010, BOTH, "alu", "4", "D[8..0] = S[8..0]"),
-    ("movd", 0b010101, 0b0010, BOTH, "alu", "4", "D[17..9] = S[8..0]"),
-    ("movi", 0b010110, 0b0010, BOTH, "alu", "4", "D[31..23] = S[8..0]"),
+    ("mins", 0b010000, 0b0010, BOTH, "alu", "4", "D = max(D, S) signed; C = D < S signed; Z = S == 0"),
+    ("maxs", 0b010001, 0b0010, BOTH, "alu", "4", "D = min(D, S) signed; C = D < S signed; Z = S == 0"),
+    ("min", 0b010010, 0b0010, BOTH, "alu", "4", "D = max(D, S) unsigned; C = D < S unsigned; Z = S == 0"),
+    ("max", 0b010011, 0b0010, BOTH, "alu", "4", "D = min(D, S) unsigned; C = D < S unsigned; Z = S == 0"),
+    ("movs", 0b010100, 0b0010, BOTH, "alu", "4", "D[8..0] = S[8..0]; C = D < S unsigned"),
+    ("movd", 0b010101, 0b0010, BOTH, "alu", "4", "D[17..9] = S[8..0]; C = D < S unsigned"),
+    ("movi", 0b010110, 0b0010, BOTH, "alu", "4", "D[31..23] = S[8..0]; C = D < S unsigned"),
     ("jmpret", 0b010111, 0b0010, BOTH, "jump", "4", "D[8..0] = return address (PC + 1); jump to S"),
     ("jmp", 0b010111, 0b0000, SRC, "jump", "4", "jump to S"),
     ("call", 0b010111, 0b0011, CALL, "jump", "4", "label_ret[8..0] = return address; jump to label"),
@@ -246,8 +248,8 @@ _TABLE = [
     ("add", 0b100000, 0b0010, BOTH, "alu", "4", "D = D + S; C = unsigned carry"),
     ("cmp", 0b100001, 0b0000, BOTH, "alu", "4", "compare D, S unsigned; Z = D == S; C = D < S"),
     ("sub", 0b100001, 0b0010, BOTH, "alu", "4", "D = D - S; C = unsigned borrow"),
-    ("addabs", 0b100010, 0b0010, BOTH, "alu", "4", "D = D + |S|; C = unsigned carry (borrow if S < 0)"),
-    ("subabs", 0b100011, 0b0010, BOTH, "alu", "4", "D = D - |S|; C = unsigned borrow (carry if S < 0)"),
+    ("addabs", 0b100010, 0b0010, BOTH, "alu", "4", "D = D + |S|; C = unsigned carry (S < 0: borrow of D - S)"),
+    ("subabs", 0b100011, 0b0010, BOTH, "alu", "4", "D = D - |S|; C = unsigned borrow (S < 0: carry of D + S)"),
     ("sumc", 0b100100, 0b0010, BOTH, "alu", "4", "D = D - S if C else D + S; C = signed overflow"),
     ("sumnc", 0b100101, 0b0010, BOTH, "alu", "4", "D = D + S if C else D - S; C = signed overflow"),
     ("sumz", 0b100110, 0b0010, BOTH, "alu", "4", "D = D - S if Z else D + S; C = signed overflow"),
@@ -269,7 +271,7 @@ _TABLE = [
     ("subs", 0b110101, 0b0010, BOTH, "alu", "4", "D = D - S signed; C = signed overflow"),
     ("addsx", 0b110110, 0b0010, BOTH, "alu", "4", "D = D + S + C signed; Z = result == 0 and Z; C = overflow"),
     ("subsx", 0b110111, 0b0010, BOTH, "alu", "4", "D = D - (S + C) signed; Z = result == 0 and Z; C = overflow"),
-    ("cmpsub", 0b111000, 0b0010, BOTH, "alu", "4", "if D >= S then D = D - S; C = subtracted"),
+    ("cmpsub", 0b111000, 0b0010, BOTH, "alu", "4", "if D >= S then D = D - S; C = subtracted; Z = D == S"),
     ("djnz", 0b111001, 0b0010, BOTH, "jump", "4/8", "D = D - 1; jump to S if D != 0"),
     ("tjnz", 0b111010, 0b0000, BOTH, "jump", "4/8", "jump to S if D != 0"),
     ("tjz", 0b111011, 0b0000, BOTH, "jump", "4/8", "jump to S if D == 0"),
