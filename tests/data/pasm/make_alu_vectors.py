@@ -21,7 +21,6 @@ from __future__ import annotations
 import argparse
 import itertools
 import re
-import struct
 import subprocess
 import sys
 import tempfile
