@@ -450,24 +450,44 @@ def _entries(objects: dict, pasm) -> dict:
 def _launches(obj: ObjectListing, m: MethodListing):
     """(DAT hub address, COGINIT address) for cognew/coginit(@dat, ...) in one method.
 
-    A tiny stack model: ``ADDR_x_OBJ`` of a DAT location pushes that address,
-    other instructions push or pop by their table effect, anything of unknown
-    effect forgets the stack.  COGINIT takes (id, code address, par).
+    A tiny stack model: constants (``PUSH_0``, ``PUSH_IMMn``...) push their
+    value, ``ADDR_x_OBJ`` of a DAT location pushes that address (indexed
+    forms too, when the index is a constant: ``@code[0]``), other
+    instructions push or pop unknowns by their table effect, and anything of
+    unknown effect forgets the stack.  COGINIT takes (id, code address, par).
     """
-    stack: list = []
+    stack: list = []                    # ("addr", hub) / ("const", value) / None
     for insn in m.insns:
         op = insn.op
-        if op.mnemonic in _COGINIT and len(stack) >= 2 and stack[-2] is not None:
-            yield stack[-2], insn.addr
-        if op.base == "OBJ" and op.access == "ADDR" and not op.indexed:
+        if op.mnemonic in _COGINIT and len(stack) >= 2 and stack[-2] and stack[-2][0] == "addr":
+            yield stack[-2][1], insn.addr
+        if op.base == "OBJ" and op.access == "ADDR":
             addr = obj.base + insn.operands[0].value
-            stack.append(addr if obj.dat_start <= addr < obj.dat_end else None)
+            if op.indexed:
+                index = stack.pop() if stack else None
+                addr = addr + op.size * index[1] if index and index[0] == "const" else -1
+            stack.append(("addr", addr) if obj.dat_start <= addr < obj.dat_end else None)
+            continue
+        const = _constant(insn)
+        if const is not None:
+            stack.append(("const", const))
             continue
         if op.pops is None or op.pushes is None or insn.assign is not None or insn.target is not None:
             stack.clear()
             continue
         del stack[max(0, len(stack) - op.pops):]
         stack += [None] * op.pushes
+
+
+def _constant(insn: BytecodeInsn) -> Optional[int]:
+    name = insn.op.mnemonic
+    if name in ("PUSH_NEG1", "PUSH_0", "PUSH_1"):
+        return {"PUSH_NEG1": -1, "PUSH_0": 0, "PUSH_1": 1}[name]
+    if name == "PUSH_MASK":
+        return bc.mask_value(insn.operands[0].value)
+    if name.startswith("PUSH_IMM"):
+        return insn.operands[0].value
+    return None
 
 
 def _dat_blocks(hub: bytes, obj: ObjectListing, entries: dict, pasm) -> list:
@@ -496,8 +516,9 @@ def _dat_blocks(hub: bytes, obj: ObjectListing, entries: dict, pasm) -> list:
 def _extent(hub: bytes, entry: int, limit: int) -> int:
     """End of a launched block: past the last long its reachable code runs or names.
 
-    Walks the code from the entry (cog address 0), following fall-through and
-    immediate jump targets, stopping at ``if_never`` longs; the block ends
+    Walks the code from the entry (cog address 0), following fall-through
+    (also over ``if_never`` longs, which the cog runs as no-ops) and immediate
+    jump targets; the block ends
     after the highest cog address reached or used as an operand (below
     ``$1F0``), but not past ``limit``.
     """
@@ -512,7 +533,9 @@ def _extent(hub: bytes, entry: int, limit: int) -> int:
             continue
         seen.add(a)
         d = pasm_isa.decode(words[a])
-        if d.cond == 0:
+        if d.cond == 0:                      # if_never: a no-op the cog steps over
+            highest = max(highest, a)
+            todo.append(a + 1)
             continue
         highest = max(highest, a, d.dest if d.dest < 0x1F0 else 0)
         if not d.immediate and d.src < 0x1F0:
@@ -531,13 +554,20 @@ def _shown_as_code(word: int) -> bool:
     return d.cond != 0 and d.instr.kind != "data"
 
 
+def _could_be_code(word: int) -> bool:
+    """For the plausibility scan: shown as code, and not the all-ones long of bitmaps."""
+    return word != 0xFFFFFFFF and _shown_as_code(word)
+
+
 def _data_or_plausible(hub: bytes, start: int, end: int, guess: bool) -> list:
     """Split a DAT range into data and runs that look like code.
 
     A run is a stretch of longs that all have a condition other than
-    ``if_never`` and an opcode with a mnemonic, at least
-    :data:`MIN_PLAUSIBLE_RUN` long, and at least 3/4 of them ``if_always``
-    (random data is ``if_always`` one time in 16, ASCII text almost never).
+    ``if_never`` and an opcode with a mnemonic (and are not ``$FFFFFFFF``,
+    common in bitmaps), with at least :data:`MIN_PLAUSIBLE_RUN` different
+    values, at least 3/4 of them ``if_always`` (random data is ``if_always``
+    one time in 16, ASCII text almost never) and at least half of them made
+    of three or more different bytes (bitmaps and fills are not).
     """
     if not guess:
         return [DatBlock("data", start, end)]
@@ -546,11 +576,13 @@ def _data_or_plausible(hub: bytes, start: int, end: int, guess: bool) -> list:
     last = first + 4 * ((end - first) // 4)
     for a in range(first, last + 4, 4):
         d = pasm_isa.decode(struct.unpack_from("<I", hub, a)[0]) if a < last else None
-        if d is not None and _shown_as_code(d.word):
+        if d is not None and _could_be_code(d.word):
             run.append(d)
             continue
         always = sum(x.cond == 0xF for x in run)
-        if len(run) >= MIN_PLAUSIBLE_RUN and 4 * always >= 3 * len(run):
+        distinct = len({x.word for x in run})
+        varied = sum(len(set(x.word.to_bytes(4, "little"))) >= 3 for x in run)
+        if distinct >= MIN_PLAUSIBLE_RUN and 4 * always >= 3 * len(run) and 2 * varied >= len(run):
             blocks += _plausible(pos, a - 4 * len(run), a)
             pos = a
         run = []

@@ -17,6 +17,7 @@ IMAGES = {
     "as_printed_stepper_demo": DATA / "article" / "as_printed_stepper_demo.binary",
     "corrected_stepper_demo": DATA / "article" / "corrected_stepper_demo.binary",
     "pasm_demo": GOLDEN / "pasm_demo.binary",
+    "pasm_launch": GOLDEN / "pasm_launch.binary",
 }
 
 
@@ -78,6 +79,14 @@ def test_cognew_of_a_dat_address_makes_a_pasm_block():
     assert "7 longs that look like code" in text
     assert "call    #L00D" in text and "L00D_ret" in text
     assert "jmp     #L000" in text            # the ret-form long that is no return
+
+
+def test_indexed_launch_address_if_never_start_and_bitmaps():
+    listing = analyse_image(IMAGES["pasm_launch"].read_bytes())
+    blocks = [(b.kind, b.start, b.end) for b in listing.objects[0x10].dat]
+    # glyph bytes and $FFFFFFFF fills stay data; cognew(@code[0], 0) is found through the
+    # constant index; the walk steps over the leading if_never long (the d0 trick)
+    assert blocks == [("data", 0x18, 0x58), ("pasm", 0x58, 0x68), ("pasm", 0x68, 0x6C)]
 
 
 def test_pasm_modes_can_be_overridden():
