@@ -64,3 +64,17 @@ def test_help_lists_the_subcommands():
     assert code == 0
     for cmd in ("compile", "run", "disasm", "translate", "trace", "sidebyside"):
         assert cmd in out
+
+
+def test_disasm_lists_an_openspin_image(tmp_path):
+    code, out, _ = run("disasm", str(DATA / "as_printed_simple_stepper.binary"))
+    assert code == 0
+    assert "clkmode $6F (XTAL1 + PLL16X)" in out
+    assert "REG_RANGE_USING      DIRA POST_SET" in out
+
+
+def test_disasm_of_a_corrupt_image_is_an_error(tmp_path):
+    bad = tmp_path / "bad.binary"
+    bad.write_bytes(b"\x00" * 8)
+    code, _, err = run("disasm", str(bad))
+    assert code == 1 and "bad.binary" in err and "Traceback" not in err
