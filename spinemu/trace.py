@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Iterable, Optional, TextIO
 
-__all__ = ["PinTrace", "read_log", "vcd_timescale"]
+__all__ = ["PinTrace", "TraceFormatError", "read_log", "vcd_timescale"]
 
 _UNITS = [("s", Fraction(1)), ("ms", Fraction(1, 10**3)), ("us", Fraction(1, 10**6)),
           ("ns", Fraction(1, 10**9)), ("ps", Fraction(1, 10**12)), ("fs", Fraction(1, 10**15))]
@@ -205,20 +205,34 @@ def _vcd_id(n: int) -> str:
     return s
 
 
+class TraceFormatError(ValueError):
+    """A malformed line in a trace log; ``line`` is 1-based, ``text`` the line itself."""
+
+    def __init__(self, message: str, line: int, text: str):
+        super().__init__(f"line {line}: {message}")
+        self.message, self.line, self.text = message, line, text
+
+
 def read_log(text: str, clock_hz: int = 80_000_000, pin_count: int = 32) -> PinTrace:
     """Parse ``<cycle> <dir> <out>`` lines (``#`` comments allowed) into a trace.
 
     Raises:
-        ValueError: on a malformed line (with its line number).
+        TraceFormatError: on a malformed line (with its line number).
+
+    >>> read_log("4 00000000 00000000\\n1000 0000001f 00000000\\n").changes
+    [(4, 0, 0), (1000, 31, 0)]
     """
     trace = PinTrace(clock_hz, pin_count=pin_count)
     for n, line in enumerate(text.splitlines(), 1):
         parts = line.split()
         if not parts or parts[0].startswith("#"):
             continue
-        if len(parts) != 3:
-            raise ValueError(f"line {n}: expected '<cycle> <dir> <out>', got {line!r}")
-        c, d, o = int(parts[0]), int(parts[1], 16), int(parts[2], 16)
+        try:
+            if len(parts) != 3:
+                raise ValueError
+            c, d, o = int(parts[0]), int(parts[1], 16), int(parts[2], 16)
+        except ValueError:
+            raise TraceFormatError("expected '<cycle> <dir> <out>' (decimal cycle, hex masks)", n, line) from None
         trace.changes.append((c, d, o))
         trace.end_cycle = max(trace.end_cycle, c)
     return trace

@@ -1,0 +1,545 @@
+"""The ``spinemu`` command: argument parsing around the library, nothing more.
+
+Each subcommand calls one library function, renders its result with rich and
+sets the exit status: 0 success, 1 bad input (a :class:`SpinError`), 2 usage
+errors.  Library errors are rendered ``file:line:col: error: ...`` with the
+source line and a caret; a Python traceback is never shown for bad input.
+Nothing imports this module; it imports the rest of spinemu lazily so that
+``spinemu --help`` starts fast.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import tempfile
+import time
+from typing import Optional, Sequence, TextIO
+
+from . import __version__
+from .diagnostics import SpinError, UsageError
+
+__all__ = ["main", "entry_point", "build_parser"]
+
+CLOCK_DEFAULT = 80_000_000
+SPIN_EXT = (".spin",)
+IMAGE_EXT = (".binary", ".bin", ".eeprom", ".eep")
+BS2_EXT = (".bs2", ".bs1", ".pbasic", ".bas")
+
+EPILOG = """\
+examples:
+  spinemu run spin_src/stepper_demo.spin                 run the column's demo to the end
+  spinemu run spin_src/stepper_demo.spin --trace demo.vcd --trace-format vcd
+  spinemu compile spin_src/stepper_demo.spin -o demo.binary
+  spinemu run spin_src/bs2/stepper_bs2.bs2 --seconds 3   the BASIC Stamp original
+  spinemu trace show demo.log --pins 0..4                timeline of pins 0-4
+  spinemu trace steps demo.log --pins 1..4               stepper decoder
+  spinemu disasm demo.binary                             listing of an image
+"""
+
+
+# ----------------------------------------------------------------------------- helpers
+def _positive_int(text: str) -> int:
+    try:
+        v = int(text.replace("_", ""), 0)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}")
+    if v <= 0:
+        raise argparse.ArgumentTypeError(f"expected a number above 0, got {text!r}")
+    return v
+
+
+def _positive_float(text: str) -> float:
+    try:
+        v = float(text.replace("_", ""))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}")
+    if v <= 0:
+        raise argparse.ArgumentTypeError(f"expected a number above 0, got {text!r}")
+    return v
+
+
+def _write_atomic(path: str, data, binary: bool) -> None:
+    """Write a whole file or nothing: to a temporary file first, then rename."""
+    folder = os.path.dirname(os.path.abspath(path)) or "."
+    fd, tmp = tempfile.mkstemp(prefix=".spinemu-", dir=folder)
+    try:
+        with os.fdopen(fd, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8"})) as f:
+            if callable(data):
+                data(f)
+            else:
+                f.write(data)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def _read_bytes(path: str) -> bytes:
+    try:
+        with open(path, "rb") as f:
+            return f.read()
+    except OSError as e:
+        raise SpinError(f"cannot read file: {e.strerror or e}", path=path)
+
+
+def _kind(path: str) -> str:
+    low = path.lower()
+    if low.endswith(SPIN_EXT):
+        return "spin"
+    if low.endswith(IMAGE_EXT):
+        return "image"
+    if low.endswith(BS2_EXT):
+        return "pbasic"
+    raise UsageError(f"cannot tell what '{path}' is: expected .spin, .binary, .eeprom or .bs2")
+
+
+class _Out:
+    """stdout/stderr plus rich consoles on them."""
+
+    def __init__(self, stdout: TextIO, stderr: TextIO, quiet: bool = False):
+        self.stdout, self.stderr, self.quiet = stdout, stderr, quiet
+        from rich.console import Console
+
+        self.console = Console(file=stdout, highlight=False, soft_wrap=False)
+        self.err_console = Console(file=stderr, highlight=False, soft_wrap=True)
+
+    def print(self, *items) -> None:
+        if not self.quiet:
+            self.console.print(*items)
+
+
+# ----------------------------------------------------------------------------- compile
+def _compile(path: str, include_dirs):
+    from .compiler import compile_file
+
+    if not os.path.exists(path):
+        raise SpinError("no such file", path=path)
+    return compile_file(path, include_dirs=list(include_dirs or ()))
+
+
+def cmd_compile(args, out: _Out) -> int:
+    if _kind(args.source) != "spin":
+        raise UsageError(f"'{args.source}' is not a .spin source file")
+    prog = _compile(args.source, args.include)
+    for w in prog.warnings:
+        out.err_console.print(w.render() if hasattr(w, "render") else str(w), markup=False)
+    target = args.output or os.path.splitext(args.source)[0] + ".binary"
+    written = []
+    if not args.eeprom or args.output:
+        _write_atomic(target, prog.binary, True)
+        written.append(target)
+    if args.eeprom:
+        _write_atomic(args.eeprom, prog.eeprom(), True)
+        written.append(args.eeprom)
+    if args.listing:
+        _write_atomic(args.listing, prog.listing(), False)
+        written.append(args.listing)
+    out.print(f"{args.source}: {len(prog.binary)} bytes of program -> {', '.join(written)}")
+    return 0
+
+
+# ----------------------------------------------------------------------------- run
+def _load_target(path: str, include_dirs):
+    """(image bytes, source_map or None) for a .spin/.binary/.eeprom target."""
+    from .image import load_image
+
+    if _kind(path) == "spin":
+        prog = _compile(path, include_dirs)
+        table = getattr(prog, "line_table", None)
+        source_map = (lambda addr: table.get(addr)) if isinstance(table, dict) else table
+        return prog.binary, source_map, prog
+    return load_image(_read_bytes(path), path), None, None
+
+
+def _progress_callback(out: _Out, total: Optional[int], enabled: bool):
+    """A rich progress bar on a terminal for long runs; otherwise nothing."""
+    if not enabled or not total or not out.stderr.isatty():
+        return None, None
+    from rich.progress import BarColumn, Progress, TextColumn, TimeRemainingColumn
+
+    progress = Progress(TextColumn("simulating"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
+                        TimeRemainingColumn(), console=out.err_console, transient=True)
+    task = progress.add_task("run", total=total)
+    last = [time.monotonic()]
+
+    def update(cycle: int) -> None:
+        now = time.monotonic()
+        if now - last[0] > 0.1:
+            last[0] = now
+            progress.update(task, completed=min(cycle, total))
+
+    return progress, update
+
+
+def _run_limit(args, clock_hz: int) -> Optional[int]:
+    if args.cycles is not None:
+        return args.cycles
+    if args.seconds is not None:
+        return int(round(args.seconds * clock_hz))
+    return None
+
+
+def _summary_table(trace, end_cycle: int, extra_rows):
+    from rich.table import Table
+
+    from .analysis.view import format_time
+
+    table = Table(show_header=False, box=None, pad_edge=False)
+    table.add_column(style="bold")
+    table.add_column()
+    table.add_row("simulated", f"{format_time(end_cycle, trace.clock_hz)} ({end_cycle:,} cycles at {trace.clock_hz:,} Hz)")
+    for k, v in extra_rows:
+        table.add_row(k, v)
+    edges = trace.edge_counts()
+    driven = trace.driven_pins()
+    if driven:
+        table.add_row("pins", ", ".join(f"P{p}: {edges.get(p, 0)} edges" for p in driven))
+    else:
+        table.add_row("pins", "no pin was ever driven")
+    return table
+
+
+def _write_trace(args, trace) -> None:
+    if not args.trace:
+        return
+    fmt = args.trace_format or ("vcd" if args.trace.lower().endswith(".vcd") else "log")
+    _write_atomic(args.trace, trace.write_vcd if fmt == "vcd" else trace.write_log, False)
+
+
+def cmd_run(args, out: _Out) -> int:
+    kind = _kind(args.target)
+    if kind == "pbasic":
+        return _run_pbasic(args, out)
+    if args.timing:
+        raise UsageError("--timing applies to BASIC Stamp programs (.bs2) only")
+    image, source_map, prog = _load_target(args.target, args.include)
+    from .image import ImageHeader
+
+    clock = ImageHeader.parse(image).clkfreq or CLOCK_DEFAULT
+    limit = _run_limit(args, clock)
+    t0 = time.perf_counter()
+    if args.engine == "python":
+        if kind != "spin":
+            raise UsageError("--engine python needs a .spin source (it translates the source)")
+        from .translate import run_translated
+
+        result = run_translated(args.target, include_dirs=list(args.include or ()), max_cycles=limit,
+                                compat=args.compat, inputs=args.inputs)
+    else:
+        from .chip import Chip
+
+        chip = Chip(image, compat=args.compat, inputs=args.inputs, source_map=source_map)
+        progress, update = _progress_callback(out, limit, not args.no_progress)
+        if progress is not None:
+            with progress:
+                result = chip.run(max_cycles=limit, progress=update)
+        else:
+            result = chip.run(max_cycles=limit)
+    wall = time.perf_counter() - t0
+    _write_trace(args, result.trace)
+    if args.dump_hub:
+        _write_atomic(args.dump_hub, bytes(result.hub), True)
+    for w in result.warnings:
+        out.err_console.print(f"warning: {w}", markup=False)
+    if not out.quiet:
+        started = sum(1 for e in result.cog_events if e[2] == "start")
+        stopped = sum(1 for e in result.cog_events if e[2] == "stop")
+        sim_s = result.end_cycle / result.trace.clock_hz
+        rows = [("ended", result.reason),
+                ("cogs", f"{started} started, {stopped} stopped"),
+                ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
+        if args.trace:
+            rows.append(("trace", f"{args.trace} ({len(result.trace.changes)} changes)"))
+        out.print(_summary_table(result.trace, result.end_cycle, rows))
+    return 0
+
+
+def _run_pbasic(args, out: _Out) -> int:
+    from .pbasic import run_file
+
+    if args.engine == "python" or args.compat != "chip":
+        raise UsageError("--engine and --compat apply to Spin programs only")
+    if args.cycles is not None:
+        raise UsageError("BASIC Stamp runs are limited with --seconds (the BS2 has no system counter)")
+    if not os.path.exists(args.target):
+        raise SpinError("no such file", path=args.target)
+    seconds = args.seconds if args.seconds is not None else 10.0
+    t0 = time.perf_counter()
+    result = run_file(args.target, seconds=seconds, timing=args.timing or "exact")
+    wall = time.perf_counter() - t0
+    if result.debug_output:
+        out.stdout.write(result.debug_output)
+        if not result.debug_output.endswith("\n"):
+            out.stdout.write("\n")
+    _write_trace(args, result.trace)
+    for w in result.warnings:
+        out.err_console.print(w.render() if hasattr(w, "render") else f"warning: {w}", markup=False)
+    if not out.quiet:
+        trace = result.trace
+        end = trace.end_cycle
+        sim_s = end / trace.clock_hz
+        rows = [("ended", result.reason), ("timing", args.timing or "exact"),
+                ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
+        if args.trace:
+            rows.append(("trace", f"{args.trace} ({len(trace.changes)} changes)"))
+        out.print(_summary_table(trace, end, rows))
+    return 0
+
+
+# ----------------------------------------------------------------------------- disasm
+def cmd_disasm(args, out: _Out) -> int:
+    from .analysis.disasm import disassemble_image
+
+    source_map = None
+    if _kind(args.target) == "spin":
+        image, source_map, _ = _load_target(args.target, args.include)
+    else:
+        image, _, _ = _load_target(args.target, args.include)
+    text = disassemble_image(image, source_map=source_map)
+    if args.output:
+        _write_atomic(args.output, text, False)
+    else:
+        out.stdout.write(text if text.endswith("\n") else text + "\n")
+    return 0
+
+
+# ----------------------------------------------------------------------------- translate
+def cmd_translate(args, out: _Out) -> int:
+    from . import translate
+
+    if _kind(args.source) != "spin":
+        raise UsageError(f"'{args.source}' is not a .spin source file")
+    if not os.path.exists(args.source):
+        raise SpinError("no such file", path=args.source)
+    if args.side_by_side:
+        out.console.print(translate.side_by_side(args.source, include_dirs=list(args.include or ())))
+        return 0
+    if not args.output:
+        raise UsageError("translate needs -o OUT_DIR (or --side-by-side)")
+    files = translate.translate_file(args.source, args.output, include_dirs=list(args.include or ()))
+    out.print(f"{args.source} -> " + ", ".join(files))
+    return 0
+
+
+# ----------------------------------------------------------------------------- trace tools
+def _load_trace(path: str, clock_hz: int):
+    from .trace import TraceFormatError, read_log
+
+    text = _read_bytes(path).decode("utf-8", "replace")
+    if text.lstrip().startswith("$"):
+        raise UsageError(f"'{path}' looks like a VCD file; trace tools read the log format")
+    try:
+        return read_log(text, clock_hz)
+    except TraceFormatError as e:
+        raise SpinError(e.message, path=path, line=e.line, column=1, source_line=e.text)
+
+
+def _pins(spec: Optional[str]):
+    if spec is None:
+        return None
+    from .analysis.view import parse_pins
+
+    try:
+        return parse_pins(spec)
+    except ValueError as e:
+        raise UsageError(str(e))
+
+
+def cmd_trace(args, out: _Out) -> int:
+    action = args.trace_action
+    if action == "compare":
+        from .analysis.compare import compare_traces
+
+        ref, cand = _load_trace(args.reference, args.clock), _load_trace(args.candidate, args.clock)
+        result = compare_traces(ref, cand, until=args.until, slack=args.slack, tolerance=args.tolerance)
+        out.stdout.write(result.render() + "\n")
+        return 0 if result.passed else 1
+    trace = _load_trace(args.file, args.clock)
+    start = args.start or 0
+    end = args.end if args.end is not None else trace.end_cycle
+    if action == "show":
+        from .analysis.view import render_changes, render_timeline
+
+        out.console.print(render_timeline(trace, _pins(args.pins), start, end, args.width))
+        if args.changes:
+            out.console.print(render_changes(trace, start, end, args.changes))
+        return 0
+    if action == "convert":
+        _write_atomic(args.output, trace.write_vcd, False)
+        out.print(f"{args.file} -> {args.output}")
+        return 0
+    if action == "plot":
+        from .analysis.plot import plot_trace
+
+        plot_trace(trace, _pins(args.pins), start, end, path=args.output, title=os.path.basename(args.file))
+        out.print(f"{args.file} -> {args.output}")
+        return 0
+    if action == "steps":
+        from .analysis.stepper import decode_steps, render_steps
+
+        steps = decode_steps(trace, _pins(args.pins))
+        out.console.print(render_steps(steps, trace.clock_hz, limit=args.limit))
+        return 0
+    raise UsageError(f"unknown trace action {action!r}")
+
+
+def cmd_sidebyside(args, out: _Out) -> int:
+    from .analysis.stepper import compare_step_sequences
+
+    left = _load_trace(args.left, args.left_clock)
+    right = _load_trace(args.right, args.right_clock)
+    report = compare_step_sequences(left, _pins(args.left_pins), right, _pins(args.right_pins))
+    out.console.print(report.render() if hasattr(report, "render") else str(report))
+    return 0 if getattr(report, "same_sequence", True) else 1
+
+
+# ----------------------------------------------------------------------------- parser
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog="spinemu",
+        description="Compile, run, trace and translate Propeller 1 Spin programs; run BASIC Stamp 2 PBASIC.",
+        epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--version", action="version", version=f"spinemu {__version__}")
+    sub = p.add_subparsers(dest="command", metavar="COMMAND")
+
+    c = sub.add_parser("compile", help="compile Spin to a Propeller image (byte-identical with OpenSpin)",
+                       description="Compile a Spin program (and its OBJ children) to a Propeller 1 image.")
+    c.add_argument("source", metavar="SRC.spin")
+    c.add_argument("-o", "--output", metavar="OUT.binary", help="image file (default: SRC.binary)")
+    c.add_argument("-e", "--eeprom", metavar="OUT.eeprom", help="also (or only) write the 32 KB EEPROM image")
+    c.add_argument("-L", "-I", dest="include", action="append", metavar="DIR",
+                   help="add a folder to search for OBJ files (after the source's own folder)")
+    c.add_argument("--listing", metavar="FILE", help="write a listing (bytecode with source lines)")
+    c.add_argument("-q", "--quiet", action="store_true", help="print nothing but errors")
+    c.set_defaults(func=cmd_compile)
+
+    r = sub.add_parser("run", help="run a .spin, .binary, .eeprom or .bs2 program and record its pins",
+                       description="Run a program on the emulated chip and record every pin change.\n"
+                                   "Spin sources are compiled first. A run ends when every cog has "
+                                   "stopped or at the limit.",
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
+    r.add_argument("target", metavar="TARGET", help=".spin, .binary, .eeprom or .bs2 file")
+    lim = r.add_mutually_exclusive_group()
+    lim.add_argument("--cycles", type=_positive_int, metavar="N", help="stop after N clock cycles")
+    lim.add_argument("--seconds", type=_positive_float, metavar="S", help="stop after S simulated seconds")
+    r.add_argument("--trace", metavar="FILE", help="write the pin trace to FILE")
+    r.add_argument("--trace-format", choices=["log", "vcd"],
+                   help="log: '<cycle> <dir> <out>' lines; vcd: for GTKWave/PulseView (default: by extension, else log)")
+    r.add_argument("--dump-hub", metavar="FILE", help="write the 32 KB hub RAM at the end of the run")
+    r.add_argument("-L", "-I", dest="include", action="append", metavar="DIR", help="OBJ search folder")
+    r.add_argument("--compat", choices=["chip", "spinsim"], default="chip",
+                   help="chip: model the real chip (default); spinsim: reproduce the reference simulator's shortcuts")
+    r.add_argument("--inputs", choices=["pulldown", "pullup"], default="pulldown",
+                   help="what pins nobody drives read as (default: pulldown)")
+    r.add_argument("--engine", choices=["bytecode", "python"], default="bytecode",
+                   help="bytecode: interpret the compiled image (default); python: run the Spin-to-Python translation")
+    r.add_argument("--timing", choices=["exact", "realistic"],
+                   help="BASIC Stamp only: exact command durations, or with per-instruction interpreter time")
+    r.add_argument("--no-progress", action="store_true", help="no progress bar")
+    r.add_argument("-q", "--quiet", action="store_true", help="no summary")
+    r.set_defaults(func=cmd_run)
+
+    d = sub.add_parser("disasm", help="list an image: header, objects, bytecode, PASM",
+                       description="Disassemble a Propeller image (.binary/.eeprom from any compiler, or a .spin "
+                                   "source, compiled first and listed with its source lines).")
+    d.add_argument("target", metavar="TARGET")
+    d.add_argument("-o", "--output", metavar="FILE", help="write the listing to FILE")
+    d.add_argument("-L", "-I", dest="include", action="append", metavar="DIR", help="OBJ search folder")
+    d.set_defaults(func=cmd_disasm)
+
+    t = sub.add_parser("translate", help="translate Spin to readable Python",
+                       description="Translate a Spin program and its objects to Python modules that run on the same chip model.")
+    t.add_argument("source", metavar="SRC.spin")
+    t.add_argument("-o", "--output", metavar="OUT_DIR", help="folder for the generated modules")
+    t.add_argument("--side-by-side", action="store_true", help="print Spin and Python next to each other")
+    t.add_argument("-L", "-I", dest="include", action="append", metavar="DIR", help="OBJ search folder")
+    t.add_argument("-q", "--quiet", action="store_true")
+    t.set_defaults(func=cmd_translate)
+
+    tr = sub.add_parser("trace", help="look at, compare, convert, plot and decode pin traces (log files)",
+                        description="Tools for '<cycle> <dir> <out>' trace logs written by 'spinemu run --trace'.")
+    tr.add_argument("--clock", type=_positive_int, default=CLOCK_DEFAULT, help="cycles per second (default 80_000_000)")
+    ts = tr.add_subparsers(dest="trace_action", metavar="ACTION")
+    tc = ts.add_parser("compare", help="same pin-state sequence? timing error?")
+    tc.add_argument("reference")
+    tc.add_argument("candidate")
+    tc.add_argument("--until", type=_positive_int, metavar="CYCLE", help="ignore changes after this cycle")
+    tc.add_argument("--tolerance", type=float, default=0.005, help="worst timing error to pass (default 0.005)")
+    tc.add_argument("--slack", type=int, default=16_000, help="cycles of fixed offset forgiven (default 16000)")
+    for name, help_ in (("show", "timeline of the pins in the terminal"), ("plot", "waveform plot to an image file"),
+                        ("convert", "convert a log to VCD"), ("steps", "decode stepper coil patterns into steps")):
+        a = ts.add_parser(name, help=help_)
+        a.add_argument("file")
+        if name in ("plot", "convert"):
+            a.add_argument("-o", "--output", required=True, metavar="FILE")
+        if name != "convert":
+            a.add_argument("--pins", metavar="SPEC", help="pins, e.g. 0..4 or 4..7,0" +
+                           (" (the coils, in table order)" if name == "steps" else ""))
+        a.add_argument("--start", type=int, metavar="CYCLE")
+        a.add_argument("--end", type=int, metavar="CYCLE")
+        if name == "show":
+            a.add_argument("--width", type=_positive_int, default=64, help="columns of the timeline")
+            a.add_argument("--changes", type=int, default=0, metavar="N", help="also list the first N changes")
+        if name == "steps":
+            a.add_argument("--limit", type=int, default=20, metavar="N", help="show the first N steps")
+    tr.set_defaults(func=cmd_trace)
+
+    s = sub.add_parser("sidebyside", help="compare two traces as stepper step sequences (e.g. BS2 vs Propeller)",
+                       description="Decode the coil patterns of two traces and compare the step sequences.")
+    s.add_argument("left")
+    s.add_argument("right")
+    s.add_argument("--left-pins", required=True, metavar="SPEC", help="coil pins of the left trace, e.g. 4..7")
+    s.add_argument("--right-pins", required=True, metavar="SPEC", help="coil pins of the right trace, e.g. 1..4")
+    s.add_argument("--left-clock", type=_positive_int, default=CLOCK_DEFAULT)
+    s.add_argument("--right-clock", type=_positive_int, default=CLOCK_DEFAULT)
+    s.set_defaults(func=cmd_sidebyside)
+    return p
+
+
+# ----------------------------------------------------------------------------- entry
+def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
+         stderr: Optional[TextIO] = None) -> int:
+    """Run the command line ``argv`` and return the exit status.
+
+    Tests call this in-process with their own streams.
+    """
+    stdout = stdout or sys.stdout
+    stderr = stderr or sys.stderr
+    parser = build_parser()
+    try:
+        old = sys.stdout, sys.stderr
+        sys.stdout, sys.stderr = stdout, stderr  # argparse prints help/usage there
+        try:
+            args = parser.parse_args(argv)
+        finally:
+            sys.stdout, sys.stderr = old
+    except SystemExit as e:
+        return int(e.code or 0)
+    if not getattr(args, "command", None):
+        parser.print_help(stdout)
+        return 2
+    if args.command == "trace" and not getattr(args, "trace_action", None):
+        stderr.write("spinemu trace: choose an action: compare, show, plot, convert, steps\n")
+        return 2
+    out = _Out(stdout, stderr, quiet=getattr(args, "quiet", False))
+    try:
+        return args.func(args, out)
+    except UsageError as e:
+        stderr.write(f"spinemu {args.command}: {e.message}\n")
+        return 2
+    except SpinError as e:
+        stderr.write(e.render() + "\n")
+        return e.exit_status
+    except OSError as e:
+        stderr.write(f"{getattr(e, 'filename', None) or 'spinemu'}: error: {e.strerror or e}\n")
+        return 1
+    except KeyboardInterrupt:
+        stderr.write("interrupted\n")
+        return 130
+
+
+def entry_point() -> None:
+    """Console-script entry point."""
+    sys.exit(main())
