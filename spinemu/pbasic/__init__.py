@@ -51,7 +51,8 @@ def run_file(program: Union[str, "Program"], *, seconds: Optional[float] = None,
              inputs: Optional[dict] = None, debug_in: Union[str, bytes] = "",
              serial_in: Optional[dict] = None, float_level: int = 0,
              gosub_model: str = "ring", end_glitch: bool = False,
-             max_instructions: Optional[int] = None) -> RunResult:
+             max_instructions: Optional[int] = None,
+             initial_ram: Optional[bytes] = None) -> RunResult:
     """Compile (if given a path) and run a BS2 program.
 
     Args:
@@ -70,6 +71,8 @@ def run_file(program: Union[str, "Program"], *, seconds: Optional[float] = None,
         end_glitch: model the watchdog glitch (outputs released 18 ms every 2.3 s)
             after END, NAP and SLEEP.
         max_instructions: stop after this many instructions (default 5,000,000).
+        initial_ram: for experiments, 32 bytes whose words 3-15 (the user RAM)
+            replace the zeros a real BS2 starts with.
 
     Returns:
         RunResult: trace, DEBUG text, SEROUT bytes, warnings, RAM, EEPROM...
@@ -81,4 +84,5 @@ def run_file(program: Union[str, "Program"], *, seconds: Optional[float] = None,
     kw = {} if max_instructions is None else {"max_instructions": max_instructions}
     return run_program(prog, seconds=seconds, cycles=cycles, timing=timing, inputs=inputs,
                        debug_in=debug_in, serial_in=serial_in, float_level=float_level,
-                       gosub_model=gosub_model, end_glitch=end_glitch, **kw)
+                       gosub_model=gosub_model, end_glitch=end_glitch,
+                       initial_ram=initial_ram, **kw)

@@ -101,7 +101,8 @@ def run_program(prog: Program, *, seconds: Optional[float] = None, cycles: Optio
                 timing: Union[str, Timing] = "exact", inputs: Optional[dict] = None,
                 debug_in: Union[str, bytes] = "", serial_in: Optional[dict] = None,
                 float_level: int = 0, gosub_model: str = "ring", end_glitch: bool = False,
-                max_instructions: int = DEFAULT_MAX_INSTRUCTIONS) -> RunResult:
+                max_instructions: int = DEFAULT_MAX_INSTRUCTIONS,
+                initial_ram: Optional[bytes] = None) -> RunResult:
     """Run ``prog``; see :func:`spinemu.pbasic.run_file` for the arguments."""
     tm = get_timing(timing)
     if gosub_model not in ("ring", "restart"):
@@ -119,6 +120,10 @@ def run_program(prog: Program, *, seconds: Optional[float] = None, cycles: Optio
                 limit_us=limit, realistic=tm.realistic, debug_in=debug_in, serial_in=serial_in,
                 pin_names={p: n for p, n in prog.pin_names.items()}, n_selects=prog.n_selects,
                 gosub_model=gosub_model, end_glitch=end_glitch)
+    if initial_ram is not None:
+        # Experiments only: a real BS2 clears RAM at reset.  INS/OUTS/DIRS stay 0.
+        for wi in range(3, 16):
+            m.w[wi] = int.from_bytes(bytes(initial_ram)[2 * wi:2 * wi + 2], "little")
     m.debug_char_us = tm.debug_char_us
     m.eeprom_write_us = tm.eeprom_write_us
     m.path = prog.path

@@ -90,14 +90,14 @@ def _comment_start(line: str) -> int:
 
 
 def conditional_compile(text: str, path: str, directives: Directives,
-                        evaluate: Callable[[str, int, int, dict], int]) -> str:
+                        evaluate: Callable[..., int]) -> str:
     """Apply ``#DEFINE/#IF/#SELECT/#ERROR`` and return the remaining source.
 
     Args:
         text: the whole source.
         path: for diagnostics.
         directives: the ``{$...}`` settings (``$STAMP``, ``$PBASIC`` values).
-        evaluate: ``evaluate(expr_text, line, column, symbols) -> int`` parses
+        evaluate: ``evaluate(expr_text, line, column, symbols, source) -> int`` parses
             and evaluates one PBASIC condition over constant symbols.
 
     Raises:
@@ -130,7 +130,7 @@ def conditional_compile(text: str, path: str, directives: Directives,
         rest = _strip_comment(m.group(3))
         col = len(m.group(1)) + 1
         rest_col = col + 1 + len(m.group(2)) + (len(m.group(3)) - len(m.group(3).lstrip()))
-        ev = lambda s, c=rest_col: evaluate(_dollar(s), n, c, symbols) & 0xFFFF  # noqa: E731
+        ev = lambda s, c=rest_col: evaluate(_dollar(s), n, c, symbols, text) & 0xFFFF  # noqa: E731
         if word == "DEFINE":
             if active():
                 name, _, value = rest.partition("=")

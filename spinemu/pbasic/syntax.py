@@ -14,7 +14,8 @@ from pathlib import Path
 from typing import Optional
 
 from lark import Lark, Token, Transformer, Tree, v_args
-from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
+from lark.exceptions import (UnexpectedCharacters, UnexpectedEOF, UnexpectedInput,
+                             VisitError)
 
 from ..diagnostics import ParseError, source_line_at
 from . import messages as M
@@ -26,6 +27,8 @@ __all__ = ["parse_source", "parse_file", "parse_condition", "grammar_path", "get
            "read_source"]
 
 _CMP_NORMAL = {"=<": "<=", "=>": ">=", "><": "<>"}
+#: Operators allowed after CON and in DATA.
+_CONST_OPS = {"+", "-", "*", "/", "<<", ">>", "&", "|", "^"}
 
 
 def grammar_path() -> Path:
@@ -74,22 +77,38 @@ def parse_source(text: str, path: str = "<input>") -> N.Program:
     tree = _parse(body, "start", path, text)
     prog = N.Program(path=path, source=text, stamp=directives.stamp or "BS2",
                      language=directives.language)
-    prog.items = _Builder(text).transform(tree)
+    prog.items = _transform(_Builder(text, path), tree)
     return prog
 
 
 def parse_condition(text: str, path: str = "<input>", line: int = 1, column: int = 1,
                     source: Optional[str] = None):
-    """Parse one PBASIC condition (used by ``#IF``); positions are shifted to ``line:column``."""
-    padded = "\n" * (line - 1) + " " * (column - 1) + text
-    tree = _parse(padded, "cond", path, source or padded)
-    return _Builder(source or padded).transform(tree)
+    """Parse one PBASIC condition (used by ``#IF``); errors point at ``line:column`` on."""
+    body = text.strip()
+    lead = len(text) - len(text.lstrip())
+    try:
+        tree = get_parser().parse(body, start="cond")
+    except UnexpectedInput as e:
+        src = source_line_at(source, line) if source else None
+        col = column + lead + max(0, (getattr(e, "column", 1) or 1) - 1)
+        raise ParseError(M.PP_BAD_EXPR, path=path, line=line, column=col,
+                         source_line=src) from None
+    return _transform(_Builder(body, path), tree)
+
+
+def _transform(builder, tree):
+    try:
+        return builder.transform(tree)
+    except VisitError as e:          # errors raised while building nodes
+        if isinstance(e.orig_exc, ParseError):
+            raise e.orig_exc from None
+        raise
 
 
 def _pp_evaluate(path: str):
-    def evaluate(expr_text: str, line: int, column: int, symbols: dict) -> int:
+    def evaluate(expr_text: str, line: int, column: int, symbols: dict, source: str) -> int:
         from .exprs import eval_const   # late import: exprs needs nodes only
-        node = parse_condition(expr_text, path, line, column)
+        node = parse_condition(expr_text, path, line, column, source)
         return eval_const(node, lambda name: symbols.get(name.upper(), 0), path=path)
     return evaluate
 
@@ -102,11 +121,12 @@ _TERMINAL_WORDS = {
     "BACKSLASH": "'\\'", "AT": "'@'", "NAME": "a name", "STRING": "a string",
     "BINOP": "a binary operator", "MINUS": "'-'", "UNOP": "a unary operator",
     "CMPOP": "a comparison operator", "LOGOP": "AND, OR or XOR", "FORMATTER": "a formatter",
-    "KOP": "'+ - * / << >> & | ^'", "VARTYPE": "Bit, Nib, Byte or Word",
+"VARTYPE": "Bit, Nib, Byte or Word",
     "LOOPTEST": "WHILE or UNTIL", "WORD": "'Word'",
 }
 _OPERAND = {"NAME", "DECNUM", "HEXNUM", "BINNUM", "STRING", "LPAR", "UNOP", "MINUS"}
 _WORD_AT_END = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)\s*$")
+_BAD_FORMATTER = re.compile(r"(?i)^(I?S?HEX|I?S?BIN|S?DEC)[0-9]+$")
 _OPERATOR_WORDS = {w for w, what in RESERVED.items()
                    if "operator" in what or "formatter" in what}
 
@@ -114,6 +134,10 @@ _OPERATOR_WORDS = {w for w, what in RESERVED.items()
 def _describe_expected(expected: set) -> str:
     parts = []
     names = set(expected)
+    if "_NL" in names:
+        # LALR merges states, so the other candidates are often noise: say
+        # what the BS2 tokenizer says.
+        return "':' or end of line"
     if names & {"NAME", "DECNUM"} and names & {"UNOP", "LPAR", "MINUS"}:
         parts.append("a constant, variable, unary operator, or '('")
         names -= _OPERAND
@@ -191,14 +215,26 @@ def _syntax_error(e: UnexpectedInput, text: str, path: str, original: str) -> Pa
         return err(M.OTHER_STAMP_COMMAND.format(word.upper(), OTHER_STAMP_COMMANDS[word.upper()]),
                    c, len(word))
     # A comparison or AND/OR/NOT outside a condition: x = a > b.
-    if tok.type in ("CMPOP", "LOGOP", "NOT") and tok.type not in expected:
+    if tok.type in ("CMPOP", "EQUAL", "LOGOP", "NOT") and tok.type not in expected:
         return err(M.COMPARE_OUTSIDE_CONDITION.format(str(tok.value).upper()))
-    if tok.type == "IF":
-        return err(M.NESTED_INLINE_IF)
-    if tok.type == "ELSE" and expected <= {"_NL", "COLON"}:
+    before = _WORD_AT_END.search(src[:col - 1])
+    if tok.type == "IF" or (before and before.group(1).upper() == "IF"
+                            and first and first[1] < before.start(1) + 1):
+        c = col if tok.type == "IF" else before.start(1) + 1
+        return err(M.NESTED_INLINE_IF, c, 2)
+    if tok.type == "ELSE" and first and first[0].upper() == "IF":
         return err(M.ELSE_AFTER_LABEL)
-    # An operator word where a value was wanted ('x = ATN 4'): blame the word.
+    # A name alone on its line: a label without its colon.
+    if tok.type in ("_NL", "COLON", "$END") and first and first[0].upper() not in RESERVED \
+            and src[first[1] - 1:col - 1].strip() == first[0]:
+        return err("label is missing ':'", first[1], len(first[0]))
     m = _WORD_AT_END.search(src[:col - 1])
+    # DEC6, BIN17: a formatter with too many digits is just an unknown name.
+    if m and _BAD_FORMATTER.match(m.group(1)):
+        word = m.group(1)
+        return err(M.UNDEFINED.format(word) + " (DEC/SDEC take 1-5 digits, HEX 1-4, BIN 1-16)",
+                   m.start(1) + 1, len(word))
+    # An operator word where a value was wanted ('x = ATN 4'): blame the word.
     if m and m.group(1).upper() in _OPERATOR_WORDS:
         word = m.group(1)
         return err(M.RESERVED_AS_VALUE.format(word.upper(), RESERVED[word.upper()]),
@@ -240,9 +276,13 @@ def leftmost_pos(e) -> N.Pos:
 class _Builder(Transformer):
     """Lark tree -> list of nodes.Stmt / nodes.Label (and expressions)."""
 
-    def __init__(self, source: str):
+    def __init__(self, source: str, path: str = "<input>"):
         super().__init__(visit_tokens=False)
         self._lines = source.split("\n")
+        self._path = path
+
+    def _line(self, n: int) -> Optional[str]:
+        return self._lines[n - 1] if 1 <= n <= len(self._lines) else None
 
     def _text(self, pos: N.Pos) -> str:
         if 1 <= pos.line <= len(self._lines):
@@ -309,6 +349,10 @@ class _Builder(Transformer):
         acc = children[0]
         for i in range(1, len(children), 2):
             op = children[i]
+            if str(op).upper() not in _CONST_OPS:
+                raise ParseError(M.UNEXPECTED.format("':' or end of line", f"'{op}'"),
+                                 path=self._path, line=op.line, column=op.column,
+                                 source_line=self._line(op.line), length=len(str(op)))
             acc = N.Binary(str(op).upper(), acc, children[i + 1], _tpos(op))
         return acc
 
