@@ -197,7 +197,9 @@ def _lookup(c, st):
 @handler("lookdown")
 def _lookdown(c, st):
     from .exprs import _COMPARE
-    value, op, *values, ref = st.args
+    value, *values, ref = st.args
+    op = values.pop(0) if values and not isinstance(values[0], (N.Num, N.Str, N.Ref, N.Unary,
+                                                                 N.Binary)) else None
     key = {"=<": "<=", "=>": ">=", "><": "<>"}.get(str(op), str(op)) if op is not None else "="
     cmp = _COMPARE[key]
     f = c.expr(value)
@@ -349,7 +351,7 @@ def _serout(c, st):
             timeout = c.expr(extras[0], "serout.timeout")
             tlabel = c.label_target(extras[1])
     c.emit("serout", S.make_serout(
-        c.pin(pin, "serout.pin"), c.pin(fpin, "serout.fpin") if fpin is not None else None,
+        c.pin(pin, "serout.pin", highest=16), c.pin(fpin, "serout.fpin") if fpin is not None else None,
         c.expr(baud, "serout.baud"), pace, timeout, tlabel, _out_items(c, items, "serout")), st)
 
 
@@ -370,7 +372,7 @@ def _serin(c, st):
     elif extras:
         raise c.error(M.SERIN_FORMS, st_pos(extras[0]))
     c.emit("serin", S.make_serin(
-        c.pin(pin, "serin.pin"), c.pin(fpin, "serin.fpin") if fpin is not None else None,
+        c.pin(pin, "serin.pin", highest=16), c.pin(fpin, "serin.fpin") if fpin is not None else None,
         c.expr(baud, "serin.baud"), timeout, tlabel, _in_items(c, items, "serin"), st.pos), st)
 
 

@@ -36,11 +36,12 @@ DTMF_TONES = {
 }
 
 
-def pin_arg(f: Callable, warn: Callable) -> Callable:
-    """A pin argument: 0..15; larger values use their low 4 bits (with a warning)."""
+def pin_arg(f: Callable, warn: Callable, highest: int = 15) -> Callable:
+    """A pin argument: 0..15 (SERIN/SEROUT: 16 is the programming port);
+    larger values use their low 4 bits (with a warning)."""
     def pin(m):
         p = f(m)
-        if p > 15:
+        if p > highest:
             warn(m, M.W_PIN_RANGE.format(p, p & 15))
             p &= 15
         return p

@@ -248,7 +248,7 @@ class Compiler(ExprContext):
         self.check(e, ARG_DEPTH.get(slot, 8) if slot else 8)
         return compile_expr(e, self)
 
-    def pin(self, e, slot: Optional[str] = None) -> Callable:
+    def pin(self, e, slot: Optional[str] = None, highest: int = 15) -> Callable:
         """A pin argument: PIN names are their numbers here."""
         from .commands import pin_arg
         self._pin_ctx = True
@@ -256,7 +256,7 @@ class Compiler(ExprContext):
             f = self.expr(e, slot)
         finally:
             self._pin_ctx = False
-        return pin_arg(f, self.warner(_pos_of(e)))
+        return pin_arg(f, self.warner(_pos_of(e)), highest)
 
     # ------------------------------------------------------------ emitting
     def emit(self, kind: str, fn: Callable, st) -> int:
