@@ -214,6 +214,9 @@ def _syntax_error(e: UnexpectedInput, text: str, path: str, original: str) -> Pa
         word, c = first
         return err(M.OTHER_STAMP_COMMAND.format(word.upper(), OTHER_STAMP_COMMANDS[word.upper()]),
                    c, len(word))
+    # A declaration of a reserved word: 'Loop VAR Byte'.
+    if tok.type in ("VAR", "CON", "PIN", "DATA") and first and first[0].upper() in RESERVED:
+        return err(M.RESERVED_NAME.format(first[0]), first[1], len(first[0]))
     # A comparison or AND/OR/NOT outside a condition: x = a > b.
     if tok.type in ("CMPOP", "EQUAL", "LOGOP", "NOT") and tok.type not in expected:
         return err(M.COMPARE_OUTSIDE_CONDITION.format(str(tok.value).upper()))
