@@ -37,13 +37,26 @@ def reader(bitoff: int, width: int, index: Optional[Callable], warn: Callable) -
     if index is None:
         wi, sh = bitoff >> 4, bitoff & 15
         if wi == 0:
-            return lambda m: (m.ins() >> sh) & mask
+            pins = mask << sh
+
+            def read_ins(m):
+                floating = pins & ~m.w[2] & m.unstimulated
+                if floating:
+                    m.float_warning(floating)
+                return (m.ins() >> sh) & mask
+            return read_ins
         return lambda m: (m.w[wi] >> sh) & mask
 
     def read(m):
         off = _wrap(m, bitoff + index(m) * width, width, warn)
         wi = off >> 4
-        word = m.ins() if wi == 0 else m.w[wi]
+        if wi == 0:
+            floating = (mask << (off & 15)) & ~m.w[2] & m.unstimulated
+            if floating:
+                m.float_warning(floating)
+            word = m.ins()
+        else:
+            word = m.w[wi]
         return (word >> (off & 15)) & mask
     return read
 

@@ -157,6 +157,7 @@ def _write(c, st):
                 a += 1
                 n += 1
         if m.eeprom_write_us:
+            m.warn(pos, M.W_WRITE_TIME)
             m.advance(m.eeprom_write_us * n)
     c.emit("write", run, st)
 

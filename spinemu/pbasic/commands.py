@@ -112,7 +112,7 @@ def make_pulsout(pin: Callable, duration: Callable) -> Callable:
 
 def _wait_level(m: Machine, pin: int, level: int, timeout_us: int) -> Optional[int]:
     """Wait until an input pin reads ``level``; return the time, or None at the timeout."""
-    if m.stim.level(pin, m.t) == level:
+    if m.input_level(pin) == level:
         return m.t
     deadline = m.t + timeout_us
     nxt = m.stim.next_change(pin, m.t, deadline)
@@ -155,7 +155,7 @@ def make_rctime(pin: Callable, state: Callable, write: Callable) -> Callable:
         p = pin(m)
         s = 1 if state(m) & 1 else 0
         m.set_pin(p, output=False)
-        if m.stim.level(p, m.t) != s:
+        if m.input_level(p) != s:
             write(m, 1)
             return
         start = m.t
@@ -172,7 +172,7 @@ def make_count(pin: Callable, duration: Callable, write: Callable) -> Callable:
         start = m.t
         end = start + duration(m) * 1000
         edges = m.stim.edges(p, start, end)
-        level = m.stim.level(p, start)
+        level = m.input_level(p)
         rising = 0
         for _ in edges:
             level ^= 1
@@ -290,7 +290,7 @@ def make_button(pin: Callable, down: Callable, delay: Callable, rate: Callable,
     def run(m):
         p = pin(m)
         m.set_pin(p, output=False)
-        pressed = m.stim.level(p, m.t) == (down(m) & 1)
+        pressed = m.input_level(p) == (down(m) & 1)
         ws = read_ws(m)
         dly = delay(m) & 0xFF
         act = False
@@ -338,6 +338,7 @@ def _glitch_wake(m: Machine) -> None:
     d = m.w[2]
     if not (m.end_glitch and d):
         return
+    m.warn(m.here(), M.W_GLITCH)
     m.trace.record(m.t, 0, 0)
     m.advance(GLITCH_US)
     m.trace.record(m.t, d, m.w[1] & d)
@@ -366,6 +367,8 @@ def make_end(reason: str) -> Callable:
     def run(m):
         if reason == "end" and m.end_glitch and m.limit is not None:
             d = m.w[2]
+            if d:
+                m.warn(m.here(), M.W_GLITCH)
             t = m.t + GLITCH_PERIOD_US
             while d and t < m.limit:
                 m.t = t

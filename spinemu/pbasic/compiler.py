@@ -598,14 +598,18 @@ class Compiler(ExprContext):
         self.emit("for", lambda m: write(m, start(m)), st)
         self.bind(fr.top)
         body = fr.top
+        warn = self.warner(st.pos)
 
         def next_(m):
             # README 4.2: NEXT re-evaluates start, end and step every time.
             s, e, d = start(m), end(m), step(m)
             up = s <= e
-            write(m, (read(m) + d) & 0xFFFF if up else (read(m) - d) & 0xFFFF)
+            n = (read(m) + d) & 0xFFFF if up else (read(m) - d) & 0xFFFF
+            write(m, n)
             v = read(m)
             lo, hi = (s, e) if up else (e, s)
+            if v != n and (lo <= v <= hi) != (lo <= n <= hi):
+                warn(m, M.W_FOR_WRAP)
             return body.pc if lo <= v <= hi else None
         fr.next = next_
 

@@ -129,6 +129,7 @@ def run_program(prog: Program, *, seconds: Optional[float] = None, cycles: Optio
     m.path = prog.path
     m.source_lines = prog.source.splitlines()
     code = prog.code
+    m.positions = [ins.pos for ins in code]
     fns = [ins.fn for ins in code]
     costs = [tm.cost(ins.kind) for ins in code]
     pc = 0
@@ -137,6 +138,7 @@ def run_program(prog: Program, *, seconds: Optional[float] = None, cycles: Optio
     try:
         while count < max_instructions:
             c = costs[pc]
+            m.pc = pc
             if c:
                 m.advance(c)
             nxt = fns[pc](m)

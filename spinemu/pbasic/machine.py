@@ -85,6 +85,10 @@ class Machine:
         self._warnings: dict[tuple, list] = {}
         self.path = "<input>"
         self.source_lines: list[str] = []
+        self.pc = 0                      # the running instruction (set by the run loop)
+        self.positions: list = []        # source position of each instruction
+        # pins that float when undriven: no stimulus at all
+        self.unstimulated = ~stimulus.stimulated_mask & MASK
 
     # ------------------------------------------------------------ pins
     def ins(self) -> int:
@@ -96,8 +100,24 @@ class Machine:
         bit = 1 << pin
         if self.w[2] & bit:
             return 1 if self.w[1] & bit else 0
+        return self.input_level(pin)
+
+    def input_level(self, pin: int) -> int:
+        """The level an input pin reads now ([OPEN] an unstimulated pin floats)."""
+        if self.unstimulated >> pin & 1:
+            self.float_warning(1 << pin)
         return self.stim.level(pin, self.t)
 
+    def float_warning(self, pins_mask: int, pos=None) -> None:
+        pins = [p for p in range(16) if pins_mask >> p & 1]
+        self.warn(pos or self.here(), "[OPEN] reading {0}: undriven input{1} with no stimulus "
+                  "read{2} {3} (set inputs= or float_level=)".format(
+                      ", ".join(f"P{p}" for p in pins), "s" if len(pins) > 1 else "",
+                      "" if len(pins) > 1 else "s", self.stim.float_level))
+
+    def here(self):
+        """Source position of the running instruction."""
+        return self.positions[self.pc] if 0 <= self.pc < len(self.positions) else None
     def pins_changed(self) -> None:
         """Record the pin state at the current time (no-op if unchanged)."""
         d = self.w[2]

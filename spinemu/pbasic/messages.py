@@ -113,6 +113,9 @@ W_FREQOUT = W_OPEN + "FREQOUT/DTMFOUT are recorded as square waves at the tone f
 W_PWM = W_OPEN + "PWM modelled as the BS2 manual describes (carry of an 8-bit duty accumulator, ~4 us per tick); exact tick unverified"
 W_XOUT = W_OPEN + "XOUT waveform modelled from the X-10 protocol at 60 Hz zero crossings (unverified)"
 W_SLEEP = W_OPEN + "SLEEP/NAP timing modelled as exact multiples (hardware: watchdog granularity, +-1%)"
-W_WRITE_TIME = W_OPEN + "EEPROM write modelled as 5 ms per byte (24LC16B maximum) in realistic timing"
+W_WRITE_TIME = W_OPEN + "EEPROM write takes 5 ms per byte in realistic timing (24LC16B maximum; unverified)"
 W_BUTTON = "BUTTON workspace is not a byte variable"
-W_STOP_GLITCH = "END: outputs released for 18 ms every 2.304 s (watchdog reset) [OPEN: period]"
+W_GLITCH = (W_OPEN + "outputs released for 18 ms every 2.304 s while asleep or ended "
+            "(watchdog period unverified)")
+W_FOR_WRAP = (W_OPEN + "the FOR counter wrapped inside its variable: the range test uses the "
+              "value read back from the variable, not the 16-bit sum")

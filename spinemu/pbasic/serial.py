@@ -102,7 +102,7 @@ def _frame_bits(b: int, seven_e: bool) -> list[int]:
 
 def _wait_pin(m: Machine, pin: int, level: int, timeout_ms: Optional[int]) -> bool:
     """Wait for an input to read ``level``; False if ``timeout_ms`` passed first."""
-    if m.stim.level(pin, m.t) == level:
+    if m.input_level(pin) == level:
         return True
     deadline = None if timeout_ms is None else m.t + timeout_ms * 1000
     nxt = m.stim.next_change(pin, m.t, deadline)
@@ -373,12 +373,12 @@ def make_shiftin(dpin: Callable, cpin: Callable, mode: Callable, items: list) ->
             v = 0
             for i in range(n):
                 if not post:
-                    b = m.stim.level(d, m.t)
+                    b = m.input_level(d)
                 m.set_pin(c, out=1)
                 m.advance(SHIFT_TH)
                 m.set_pin(c, out=0)
                 if post:
-                    b = m.stim.level(d, m.t)
+                    b = m.input_level(d)
                 m.advance(SHIFT_TB + SHIFT_TA)
                 if lsb:
                     v |= b << i

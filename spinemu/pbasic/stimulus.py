@@ -71,6 +71,8 @@ class PinStimulus:
             else:
                 self._const[pin] = 1 if s else 0
         self.static = not self._steps and not self._calls
+        self.stimulated_mask = sum(1 << p for p in
+                                   set(self._const) | set(self._steps) | set(self._calls))
         base = 0xFFFF if self.float_level else 0
         for pin, lv in self._const.items():
             base = (base | (1 << pin)) if lv else (base & ~(1 << pin))

@@ -268,3 +268,9 @@ def test_xout_is_reported_as_not_supported():
     from spinemu.diagnostics import SpinError
     with pytest.raises(SpinError, match="'XOUT' is not supported"):
         bs2("XOUT 0, 1, [0\\0]")
+
+
+def test_optional_watchdog_glitch_after_nap_warns():
+    res = run("HIGH 1\nNAP 0\nLOW 1", end_glitch=True)
+    assert levels(res, 1) == [(0, "z"), (0, "1"), (18_000, "z"), (36_000, "1"), (36_000, "0")]
+    assert any("watchdog" in w.message for w in res.warnings)

@@ -268,3 +268,16 @@ def test_line_ending_in_a_comma_continues():
 
 def test_statements_separated_by_colons_and_labels_with_statements():
     assert out("x VAR Byte\nStart: x = 1 : DEBUG DEC x : x = 2 : DEBUG DEC x") == "12"
+
+
+def test_reading_an_unstimulated_input_warns_once_per_place():
+    res = run("x VAR Bit\nFOR B1 = 1 TO 3\nx = IN7\nNEXT\nHIGH 6\nx = IN6")
+    (w,) = res.warnings
+    assert "P7" in w.message and "[OPEN]" in w.message and w.line == 5 and "3 times" in w.message
+    assert run("x VAR Bit\nx = IN7", inputs={7: 0}).warnings == []
+
+
+def test_for_counter_wrapping_in_a_byte_warns_where_the_open_rule_decides():
+    res = run("x VAR Byte\nFOR x = 10 TO 300\nNEXT")
+    assert any("wrapped inside its variable" in w.message for w in res.warnings)
+    assert run("x VAR Word\nFOR x = 10 TO 300\nNEXT").warnings == []
