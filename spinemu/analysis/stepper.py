@@ -33,7 +33,8 @@ from typing import Optional, Sequence
 from ..trace import PinTrace
 
 __all__ = ["PHASE", "Step", "Segment", "StepSequence", "StepComparison", "decode_steps",
-           "compare_step_sequences", "compare_stepper_traces", "parse_pins", "pattern_text"]
+           "compare_step_sequences", "compare_stepper_traces", "parse_pins", "pattern_text",
+           "render_steps"]
 
 #: Position of each coil pattern on the 8-step half-step cycle.
 PHASE = {0b0001: 0, 0b0011: 1, 0b0010: 2, 0b0110: 3, 0b0100: 4, 0b1100: 5, 0b1000: 6, 0b1001: 7}
@@ -47,17 +48,15 @@ def pattern_text(p: Optional[int], width: int = 4) -> str:
 
 
 def parse_pins(text: str) -> list[int]:
-    """``"P4..P7"``, ``"4-7"``, ``"4,5,6,7"`` or ``"P7..P4"`` -> pin numbers in coil order.
+    """Coil pins in coil order: ``"P4..P7"``, ``"4..7"``, ``"4-7"``, ``"1,2,3,4"``, ``"P7..P4"``.
 
-    >>> parse_pins("P4..P7"), parse_pins("1,2,3,4"), parse_pins("p7..p4")
+    >>> parse_pins("P4..P7"), parse_pins("1,2,3,4"), parse_pins("p7-p4")
     ([4, 5, 6, 7], [1, 2, 3, 4], [7, 6, 5, 4])
     """
-    s = text.strip().upper().replace("P", "")
-    m = re.fullmatch(r"(\d+)\s*(?:\.\.|-)\s*(\d+)", s)
-    if m:
-        a, b = int(m.group(1)), int(m.group(2))
-        return list(range(a, b + 1)) if a <= b else list(range(a, b - 1, -1))
-    return [int(x) for x in s.split(",") if x.strip()]
+    from .view import parse_pins as _view_parse_pins
+    spec = re.sub(r"(?i)p(?=\d)", "", text)
+    spec = re.sub(r"(?<=\d)\s*-\s*(?=\d)", "..", spec)
+    return _view_parse_pins(spec)
 
 
 @dataclass(frozen=True)
@@ -122,10 +121,12 @@ class Segment:
         return {1: "forward", -1: "reverse", 0: "hold", None: "irregular"}[self.direction]
 
     def describe(self) -> str:
-        per = f"{self.period * 1e3:8.3f} ms/step ({self.speed:6.1f} steps/s)" if self.period \
-            else "      single step"
-        return (f"steps {self.first + 1:4d}-{self.last + 1:<4d} {self.direction_text:<9} "
-                f"{self.count:4d} steps {per}  {self.start:8.4f}-{self.end:.4f} s")
+        """One line (under 80 characters) for reports."""
+        rng = f"{self.first + 1}-{self.last + 1}"
+        per = (f"{self.period * 1e3:7.3f} ms/step {self.speed:6.1f}/s" if self.period
+               else "  single step        ")
+        return (f"{rng:>9} {self.direction_text:<9}{self.count:4d} steps {per}  "
+                f"{self.start:7.3f}-{self.end:.3f} s")
 
 
 @dataclass
@@ -315,6 +316,11 @@ class StepComparison:
     agree: bool
 
     @property
+    def same_sequence(self) -> bool:
+        """Alias of :attr:`agree` (the CLI's exit status)."""
+        return self.agree
+
+    @property
     def common_steps(self) -> int:
         """Leading steps with the same pattern in both."""
         return self.compared if self.first_difference is None else self.first_difference
@@ -378,19 +384,25 @@ def _step_text(s: Optional[Step]) -> str:
     return f"{s.text} {d} at {s.time:.4f} s"
 
 
-def compare_step_sequences(a: StepSequence, b: StepSequence, *, steps: Optional[int] = None,
-                           names: tuple = ("A", "B")) -> StepComparison:
+def compare_step_sequences(a, b, c=None, d=None, *, steps: Optional[int] = None,
+                           names: tuple = ("A", "B"), min_dwell: float = 0.0) -> StepComparison:
     """Compare the coil-pattern sequences of two step sequences.
 
+    Call it with two :class:`StepSequence` (from :func:`decode_steps`), or
+    with ``(trace_a, pins_a, trace_b, pins_b)`` to decode both first.
+
     Args:
-        a, b: from :func:`decode_steps` (any clocks; times are in seconds).
+        a, b: the sequences (any clocks; times are in seconds).
         steps: compare only the first ``steps`` steps (e.g. 48 for one
             revolution); default: the length of the shorter sequence.
         names: labels for the report.
+        min_dwell: with traces, passed to :func:`decode_steps`.
 
     Returns:
         StepComparison with ``agree``, ``first_difference`` and :meth:`~StepComparison.render`.
     """
+    if isinstance(a, PinTrace):
+        a, b = (decode_steps(a, b, min_dwell=min_dwell), decode_steps(c, d, min_dwell=min_dwell))
     n = min(len(a.steps), len(b.steps))
     if steps is not None:
         n = min(n, steps)
@@ -403,6 +415,23 @@ def compare_step_sequences(a: StepSequence, b: StepSequence, *, steps: Optional[
         first = min(len(a.steps), len(b.steps))
     agree = first is None
     return StepComparison(a, b, tuple(names), n, first, agree)
+
+
+def render_steps(seq: StepSequence, clock_hz: Optional[int] = None, limit: int = 20) -> str:
+    """A step table (the first ``limit`` steps) and the segment summary, as text.
+
+    ``clock_hz`` is accepted for symmetry with other renderers; the cycles
+    shown are those of the decoded trace.
+    """
+    lines = [seq.summary("steps"), "", " step       cycle        time  pattern  move   interval"]
+    for s in seq.steps[:limit]:
+        move = {None: "   ?", 2: "  +1", -2: "  -1", 1: "+1/2", -1: "-1/2", 0: "   0"}.get(s.delta, "   ?")
+        iv = f"{s.interval * 1e3:8.3f} ms" if s.interval is not None else "          -"
+        lines.append(f"{s.index + 1:5d} {s.cycle:11d} "
+                     f"{s.time:10.6f} s   {s.text}   {move}  {iv}")
+    if len(seq.steps) > limit:
+        lines.append(f"  ... {len(seq.steps) - limit} more steps")
+    return "\n".join(lines)
 
 
 def compare_stepper_traces(trace_a: PinTrace, pins_a: Sequence[int], trace_b: PinTrace,

@@ -169,3 +169,19 @@ def test_compare_stepper_traces_in_one_call():
     spin = read_log(SPIN_TRACE.read_text(), clock_hz=80_000_000)
     cmp = compare_stepper_traces(bs2.trace, [4, 5, 6, 7], spin, [1, 2, 3, 4], steps=48)
     assert cmp.agree
+
+
+def test_compare_accepts_traces_and_pins_as_the_cli_calls_it():
+    bs2 = run_file(BS2_DEMO, seconds=3)
+    spin = read_log(SPIN_TRACE.read_text(), clock_hz=80_000_000)
+    cmp = compare_step_sequences(bs2.trace, [4, 5, 6, 7], spin, [1, 2, 3, 4])
+    assert cmp.first_difference == 96 and cmp.same_sequence is False
+
+
+def test_render_steps_lists_the_first_steps():
+    from spinemu.analysis.stepper import render_steps
+    seq = decode_steps(run_file(BS2_DEMO, seconds=0.1).trace, [4, 5, 6, 7])
+    text = render_steps(seq, 1_000_000, limit=3)
+    assert "    1           0   0.000000 s   0110      ?" in text
+    assert "    2       15000   0.015000 s   1100     +1    15.000 ms" in text
+    assert "... 4 more steps" in text
