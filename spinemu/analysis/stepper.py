@@ -367,9 +367,11 @@ class StepComparison:
         for nm, seq in ((na, self.a), (nb, self.b)):
             if n < len(seq.steps):
                 tail = [sg for sg in seq.segments() if sg.last >= n]
-                out.append(f"  after step {n}, {nm} goes on: " + "; ".join(
-                    f"{sg.direction_text} {sg.count} steps at {_ms(sg.period)}" for sg in tail[:6])
-                    + (" ..." if len(tail) > 6 else ""))
+                out.append(f"  after step {n}, {nm} goes on:")
+                out += [f"    {sg.direction_text} {sg.count} steps at {_ms(sg.period)}"
+                        for sg in tail[:6]]
+                if len(tail) > 6:
+                    out.append(f"    ... {len(tail) - 6} more segments")
         return "\n".join(out)
 
 

@@ -161,7 +161,7 @@ def test_comparison_report_tells_the_story(column):
     assert "coil patterns agree for the first 96 steps" in text
     assert "first difference at step 97" in text
     assert "BS2/Spin = 2.957" in text
-    assert "Spin goes on: reverse 48 steps at 6.075 ms/step" in text
+    assert "after step 96, Spin goes on:\n    reverse 48 steps at 6.075 ms/step" in text
 
 
 def test_compare_stepper_traces_in_one_call():
