@@ -24,7 +24,7 @@ from .compiler import Program, compile_program
 from .interp import RunResult, run_program
 from .machine import CLOCK_HZ
 from .stimulus import PinStimulus, parse_input_spec
-from .syntax import parse_file, parse_source, read_source
+from .syntax import parse_source, read_source
 from .timing import Timing, get_timing
 
 __all__ = ["compile_file", "compile_source", "run_file", "Program", "RunResult", "CLOCK_HZ",

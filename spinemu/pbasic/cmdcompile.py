@@ -93,7 +93,7 @@ def _button(c, st):
     pin, down, delay, rate, ws, target, label = st.args
     write, read, width = c.target(ws, "button.index")
     if width < 8:
-        raise c.error("BUTTON needs a byte or word workspace variable", ws.pos)
+        raise c.error(M.BUTTON_WORKSPACE, ws.pos)
     c.emit("button", C.make_button(
         c.pin(pin, "button.pin"), c.expr(down), c.expr(delay, "button.delay"),
         c.expr(rate, "button.rate"), read, write, c.expr(target, "button.target"),
@@ -340,7 +340,7 @@ def _serout(c, st):
     pace = timeout = tlabel = None
     if fpin is None:
         if len(extras) > 1:
-            raise c.error("expected '['", st_pos(extras[1]))
+            raise c.error(M.EXPECTED_BRACKET, st_pos(extras[1]))
         if extras:
             pace = c.expr(extras[0], "serout.pace")
     else:

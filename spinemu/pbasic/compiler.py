@@ -228,7 +228,7 @@ class Compiler(ExprContext):
             pos = N.Pos(tok.line, tok.column, len(name))
         sym = self.syms.lookup(name)
         if sym is None:
-            raise self.error("undefined label '{0}'".format(name), pos)
+            raise self.error(M.UNDEFINED_LABEL.format(name), pos)
         if sym.kind != "label":
             raise self.error(M.EXPECTED_LABEL, pos)
         return self.labels[name.upper()]
@@ -315,14 +315,14 @@ class Compiler(ExprContext):
             from . import cmdcompile
             handler = cmdcompile.HANDLERS.get(st.kind)
             if handler is None:
-                raise self.error(f"'{st.kind.upper()}' is not supported by spinemu yet", st.pos)
+                raise self.error(M.NOT_SUPPORTED.format(st.kind.upper()), st.pos)
             handler(self, st)
             return
         handler(st)
 
     def _select_needs_case(self, st) -> None:
         if self.frames and self.frames[-1].kind == "SELECT" and self.frames[-1].count == 0:
-            raise self.error("expected 'CASE'", st.pos)
+            raise self.error(M.EXPECTED_CASE, st.pos)
 
     # ------------------------------------------------------------ frames
     def push(self, frame: _Frame) -> _Frame:
@@ -433,7 +433,7 @@ class Compiler(ExprContext):
     def s_elseif(self, st) -> None:
         fr = self.top(("IF",), st, "ELSEIF", "IF")
         if fr.else_seen:
-            raise self.error("expected a label, variable, instruction, or 'ENDIF'", st.pos)
+            raise self.error(M.EXPECTED_ENDIF, st.pos)
         fr.count += 1
         if fr.count > 16:
             raise self.error(M.TOO_MANY_ELSEIF, st.pos)
@@ -445,10 +445,10 @@ class Compiler(ExprContext):
     def s_else_(self, st) -> None:
         if not self.frames or self.frames[-1].kind != "IF":
             if not any(f.kind == "IF" for f in self.frames):
-                raise self.error("'ELSE' must be preceded by 'IF' or 'CASE'", st.pos)
+                raise self.error(M.ELSE_WITHOUT_IF, st.pos)
         fr = self.top(("IF",), st, "ELSE", "IF")
         if fr.else_seen:
-            raise self.error("expected a label, variable, instruction, or 'ENDIF'", st.pos)
+            raise self.error(M.EXPECTED_ENDIF, st.pos)
         fr.else_seen = True
         self.jump(fr.end, st)
         self.bind(fr.false)
@@ -550,7 +550,7 @@ class Compiler(ExprContext):
     def s_endselect(self, st) -> None:
         fr = self.top(("SELECT",), st, "ENDSELECT", "SELECT")
         if fr.count == 0 or fr.case_stmt == self.stmt_count - 1:
-            msg = "expected 'CASE'" if fr.count == 0 else M.STATEMENTS_AFTER_CASE
+            msg = M.EXPECTED_CASE if fr.count == 0 else M.STATEMENTS_AFTER_CASE
             raise self.error(msg, st.pos)
         if fr.false is not None:
             self.bind(fr.false)
@@ -580,7 +580,7 @@ class Compiler(ExprContext):
     def s_exit(self, st) -> None:
         loops = [f for f in self.frames if f.kind in ("DO", "FOR")]
         if not loops:
-            raise self.error("'EXIT' only allowed within FOR-NEXT and DO-LOOP structures", st.pos)
+            raise self.error(M.EXIT_OUTSIDE_LOOP, st.pos)
         fr = loops[-1]
         fr.count += 1
         if fr.count > 16:

@@ -13,7 +13,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Optional, Union
 
-from ..diagnostics import Diagnostic
 from ..trace import PinTrace
 from .compiler import Program
 from .machine import CLOCK_HZ, Machine, StopRun

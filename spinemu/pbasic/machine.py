@@ -22,6 +22,7 @@ from typing import Optional
 
 from ..diagnostics import Diagnostic
 from ..trace import PinTrace
+from . import messages as M
 from .stimulus import PinStimulus
 
 __all__ = ["Machine", "StopRun", "CLOCK_HZ", "MASK"]
@@ -110,8 +111,7 @@ class Machine:
 
     def float_warning(self, pins_mask: int, pos=None) -> None:
         pins = [p for p in range(16) if pins_mask >> p & 1]
-        self.warn(pos or self.here(), "[OPEN] reading {0}: undriven input{1} with no stimulus "
-                  "read{2} {3} (set inputs= or float_level=)".format(
+        self.warn(pos or self.here(), M.W_FLOATING.format(
                       ", ".join(f"P{p}" for p in pins), "s" if len(pins) > 1 else "",
                       "" if len(pins) > 1 else "s", self.stim.float_level))
 
@@ -147,7 +147,7 @@ class Machine:
 
     def wait_forever(self, what: str, pos) -> None:
         """Block for good (SERIN without data and without timeout)."""
-        self.warn(pos, f"waiting for {what} input that never comes")
+        self.warn(pos, M.W_INPUT_WAIT.format(what))
         if self.limit is not None:
             self.t = self.limit
         raise StopRun("input")
@@ -156,9 +156,7 @@ class Machine:
     def ee_read(self, addr: int, pos) -> int:
         addr &= 0x7FF
         if not self.defined[addr]:
-            self.warn(pos, "READ from EEPROM address {0}, which no DATA statement defines: "
-                      "reads {1} (on a BS2 it may hold program tokens or old data)"
-                      .format(addr, self.eeprom[addr]))
+            self.warn(pos, M.W_EEPROM_UNDEFINED.format(addr, self.eeprom[addr]))
         return self.eeprom[addr]
 
     def ee_write(self, addr: int, value: int, pos) -> None:
@@ -168,8 +166,7 @@ class Machine:
         n = self.ee_writes.get(addr, 0) + 1
         self.ee_writes[addr] = n
         if n in (100_000, 1_000_000):
-            self.warn(pos, f"WRITE to EEPROM address {addr} for the {n}th time: "
-                      "real EEPROM wears out (about 10^6 writes per cell)")
+            self.warn(pos, M.W_EEPROM_WEAR.format(addr, n))
 
     # ------------------------------------------------------------ serial
     def emit(self, pin: int, data: bytes) -> None:

@@ -45,7 +45,6 @@ EXPECTED_CONSTANT = "expected a constant"                                     # 
 EXPECTED_VARIABLE = "expected a variable"
 EXPECTED_WORD_VARIABLE = "expected a word variable"                           # 173
 EXPECTED_LABEL = "expected a label"                                           # 148
-NOT_A_LABEL = "'{0}' is not a label"
 LABEL_AS_VALUE = "'{0}' is a label, not a value"
 CONSTANT_TOO_BIG = "constant exceeds 16 bits"                                  # 109
 DIVIDE_BY_ZERO = "cannot divide by 0"                                          # 113
@@ -60,14 +59,21 @@ INDEX_ON_CONSTANT = "'{0}' is not a variable and cannot be indexed"
 ALIAS_INDEX = "an alias cannot name an array element; use a modifier"
 PIN_RANGE = "a PIN must be a constant from 0 to 15"
 STRING_AS_NUMBER = "a string of {0} characters is not a single value"
-STR_NEEDS_BYTES = "STR needs a byte array"
 EXPRESSION_TOO_COMPLEX = "expression is too complex (the BS2 evaluates on an 8-entry stack)"  # 144
 
 # ----------------------------------------------------------------- structure
 WITHOUT = "'{0}' without '{1}'"                                               # 168/169...
 MUST_FOLLOW = "'{0}' must be preceded by '{1}'"                              # 228...
-CASE_ELSE_NOT_LAST = "'CASE ELSE' must be the last CASE of its SELECT"
-EXIT_OUTSIDE_LOOP = "'EXIT' is only allowed inside DO...LOOP or FOR...NEXT"
+EXIT_OUTSIDE_LOOP = "'EXIT' only allowed within FOR-NEXT and DO-LOOP structures"      # 167
+ELSE_WITHOUT_IF = "'ELSE' must be preceded by 'IF' or 'CASE'"                        # 159
+EXPECTED_CASE = "expected 'CASE'"                                                     # 179
+EXPECTED_ENDIF = "expected a label, variable, instruction, or 'ENDIF'"                # 161
+NOT_SUPPORTED = "'{0}' is not supported by spinemu yet"
+UNDEFINED_LABEL = "undefined label '{0}'"                                             # 111
+DUPLICATE_LABEL = "label is already defined"                                          # 117
+LABEL_MISSING_COLON = "label is missing ':'"                                          # 174
+EXPECTED_BRACKET = "expected '['"                                                     # 121
+BUTTON_WORKSPACE = "BUTTON needs a byte or word workspace variable"
 TOO_MANY_NESTED = "too many nested {0} (the BS2 allows {1})"
 TOO_MANY_GOSUBS = "too many GOSUBs: the BS2 allows 255 per program"
 TOO_MANY_ELSEIF = "too many ELSEIFs in one IF (the BS2 allows 16)"
@@ -80,11 +86,9 @@ LOCATION_RANGE = "location is out of range (EEPROM is 0 to 2047)"            # 1
 LOCATION_USED = "location already contains data"                             # 115
 
 # ----------------------------------------------------------------- arguments
-ARG_COUNT = "{0} takes {1}"
 SEROUT_FORMS = ("SEROUT takes Tpin, Baudmode, {Pace,} [data] or "
                 "Tpin\\Fpin, Baudmode, {Timeout, Tlabel,} [data]")
 SERIN_FORMS = "SERIN takes Rpin{\\Fpin}, Baudmode, {Plabel,} {Timeout, Tlabel,} [data]"
-FORMATTER_NOT_FOR_INPUT = "'{0}' cannot be used for input"
 LIST_TOO_LONG = "a {0} list holds at most {1} entries"
 
 # ----------------------------------------------------------------- run time (warnings)
@@ -103,18 +107,18 @@ W_GOSUB_OVERFLOW = (W_OPEN + "GOSUB nested deeper than 4: the oldest return "
 W_RETURN_UNDERFLOW = W_OPEN + "RETURN without a pending GOSUB: {0}"
 W_RETURN_RESTART = "restarts the program without clearing RAM"
 W_RETURN_STALE = "returns to a stale return address"
-W_EEPROM_UNDEFINED = ("READ from EEPROM address {0}, which no DATA statement "
-                      "defines: reads 0 (on a BS2 it may hold program tokens or old data)")
-W_EEPROM_WEAR = "WRITE to EEPROM address {0} for the {1}th time: real EEPROM wears out (about 10^6 writes)"
+W_EEPROM_UNDEFINED = ("READ from EEPROM address {0}, which no DATA statement defines: "
+                      "reads {1} (on a BS2 it may hold program tokens or old data)")
+W_EEPROM_WEAR = ("WRITE to EEPROM address {0} for the {1}th time: real EEPROM wears out "
+                 "(about 10^6 writes per cell)")
+W_FLOATING = ("[OPEN] reading {0}: undriven input{1} with no stimulus read{2} {3} "
+              "(set inputs= or float_level=)")
 W_PIN_RANGE = "pin {0} is out of range 0 to 15: uses pin {1}"
 W_RANDOM = W_OPEN + "RANDOM uses a documented 16-bit LFSR; the firmware's exact sequence is unverified"
 W_INPUT_WAIT = "waiting for {0} input that never comes"
 W_FREQOUT = W_OPEN + "FREQOUT/DTMFOUT are recorded as square waves at the tone frequency (the BS2 synthesises sines with fast PWM)"
 W_PWM = W_OPEN + "PWM modelled as the BS2 manual describes (carry of an 8-bit duty accumulator, ~4 us per tick); exact tick unverified"
-W_XOUT = W_OPEN + "XOUT waveform modelled from the X-10 protocol at 60 Hz zero crossings (unverified)"
-W_SLEEP = W_OPEN + "SLEEP/NAP timing modelled as exact multiples (hardware: watchdog granularity, +-1%)"
 W_WRITE_TIME = W_OPEN + "EEPROM write takes 5 ms per byte in realistic timing (24LC16B maximum; unverified)"
-W_BUTTON = "BUTTON workspace is not a byte variable"
 W_GLITCH = (W_OPEN + "outputs released for 18 ms every 2.304 s while asleep or ended "
             "(watchdog period unverified)")
 W_FOR_WRAP = (W_OPEN + "the FOR counter wrapped inside its variable: the range test uses the "

@@ -24,7 +24,6 @@ from __future__ import annotations
 from collections import deque
 from typing import Callable, Optional
 
-from . import messages as M
 from .machine import MASK, Machine, StopRun
 
 __all__ = ["format_number", "make_debug", "make_serout", "make_serin", "make_debugin",

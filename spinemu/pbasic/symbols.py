@@ -129,7 +129,7 @@ class SymbolTable:
             raise self.error(M.RESERVED_NAME.format(name), pos)
         if key in self.symbols:
             old = self.symbols[key]
-            msg = "label is already defined" if label and old.kind == "label" else M.DUPLICATE.format(name)
+            msg = M.DUPLICATE_LABEL if label and old.kind == "label" else M.DUPLICATE.format(name)
             raise self.error(msg, pos)
         self.symbols[key] = Symbol(name, kind, pos, decl=decl)
 

@@ -230,7 +230,7 @@ def _syntax_error(e: UnexpectedInput, text: str, path: str, original: str) -> Pa
     # A name alone on its line: a label without its colon.
     if tok.type in ("_NL", "COLON", "$END") and first and first[0].upper() not in RESERVED \
             and src[first[1] - 1:col - 1].strip() == first[0]:
-        return err("label is missing ':'", first[1], len(first[0]))
+        return err(M.LABEL_MISSING_COLON, first[1], len(first[0]))
     m = _WORD_AT_END.search(src[:col - 1])
     # DEC6, BIN17: a formatter with too many digits is just an unknown name.
     if m and _BAD_FORMATTER.match(m.group(1)):

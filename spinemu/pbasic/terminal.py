@@ -43,8 +43,8 @@ def stream_text(data: bytes) -> str:
 def screen(data: bytes, width: int = 80, height: int = 24) -> list[str]:
     """The Debug Terminal's screen after receiving ``data`` (trailing blanks removed).
 
-    >>> screen(b"abc\\x02\\x01\\x00Z")
-    ['abc', 'Z']
+    >>> screen(b"abc\\x02\\x01\\x00Z")      # CRSRXY 1, 0 then "Z"
+    ['aZc']
     """
     rows = [[" "] * width for _ in range(height)]
     x = y = 0
