@@ -328,8 +328,7 @@ class Compiler(ExprContext):
     def push(self, frame: _Frame) -> _Frame:
         same = sum(1 for f in self.frames if f.kind == frame.kind)
         if same >= _LIMIT_NEST:
-            raise self.error(M.TOO_MANY_NESTED.format(_OPEN_CLOSE[frame.kind][0] + "s", _LIMIT_NEST),
-                             frame.pos)
+            raise self.error(M.TOO_MANY_NESTED[frame.kind], frame.pos)
         self.frames.append(frame)
         return frame
 

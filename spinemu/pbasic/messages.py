@@ -18,8 +18,9 @@ NEEDS_25 = "'{0}' needs PBASIC 2.5: add ' {{$PBASIC 2.5}} to the top of the file
 NOTHING_TO_TOKENIZE = "nothing to run: the program has no executable statement"   # 157
 
 # ----------------------------------------------------------------- parsing
+CANNOT_READ = "cannot read the file: {0}"
 UNEXPECTED = "expected {0}, found {1}"
-UNEXPECTED_CHAR = "unexpected character {0!r}"
+UNEXPECTED_CHAR = "unrecognized character {0!r}"                                  # 103
 RESERVED_AS_VALUE = "'{0}' is {1} and cannot be used here"
 COMPARE_OUTSIDE_CONDITION = ("'{0}' is only allowed in a condition (IF, ELSEIF, "
                              "DO/LOOP WHILE/UNTIL); in other expressions use the "
@@ -51,13 +52,14 @@ DIVIDE_BY_ZERO = "cannot divide by 0"                                          #
 OUT_OF_VARIABLE_SPACE = ("out of variable space: {0} needs {1} more bits than "
                          "the 26 bytes of BS2 RAM hold")
 ARRAY_SIZE = "array size must be a constant from 1 to {0}"
+ARRAY_SIZE_ZERO = "array size cannot be 0"                                             # 125
 MODIFIER_UNKNOWN = "expected a variable modifier"                             # 137
 MODIFIER_TOO_BIG = "expected a smaller-size variable modifier"                # 139
 MODIFIER_RANGE = "variable modifier is out-of-range"                          # 140
 MODIFIER_ON_CONSTANT = "a modifier needs a variable, '{0}' is not one"
 INDEX_ON_CONSTANT = "'{0}' is not a variable and cannot be indexed"
 ALIAS_INDEX = "an alias cannot name an array element; use a modifier"
-PIN_RANGE = "a PIN must be a constant from 0 to 15"
+PIN_RANGE = "pin number must be 0 to 15"                                              # 175
 STRING_AS_NUMBER = "a string of {0} characters is not a single value"
 EXPRESSION_TOO_COMPLEX = "expression is too complex (the BS2 evaluates on an 8-entry stack)"  # 144
 
@@ -74,11 +76,16 @@ DUPLICATE_LABEL = "label is already defined"                                    
 LABEL_MISSING_COLON = "label is missing ':'"                                          # 174
 EXPECTED_BRACKET = "expected '['"                                                     # 121
 BUTTON_WORKSPACE = "BUTTON needs a byte or word workspace variable"
-TOO_MANY_NESTED = "too many nested {0} (the BS2 allows {1})"
-TOO_MANY_GOSUBS = "too many GOSUBs: the BS2 allows 255 per program"
-TOO_MANY_ELSEIF = "too many ELSEIFs in one IF (the BS2 allows 16)"
-TOO_MANY_CASES = "too many CASEs in one SELECT (the BS2 allows 16)"
-TOO_MANY_EXITS = "too many EXITs in one loop (the BS2 allows 16)"
+TOO_MANY_NESTED = {                                                          # 146 158 163 178
+    "FOR": "limit of 16 nested FOR-NEXT loops exceeded",
+    "IF": "limit of 16 nested IF-THEN statements exceeded",
+    "DO": "limit of 16 nested DO-LOOP statements exceeded",
+    "SELECT": "limit of 16 nested SELECT statements exceeded",
+}
+TOO_MANY_GOSUBS = "limit of 255 GOSUBs exceeded"                                   # 145
+TOO_MANY_ELSEIF = "limit of 16 ELSEIF statements within IF structure exceeded"     # 229
+TOO_MANY_CASES = "limit of 16 CASE statements within SELECT structure exceeded"    # 181
+TOO_MANY_EXITS = "limit of 16 EXIT statements within loop structure exceeded"      # 171
 STATEMENTS_AFTER_CASE = "expected statements to follow previous 'CASE'"     # 226
 
 # ----------------------------------------------------------------- DATA / EEPROM

@@ -144,7 +144,8 @@ class SymbolTable:
                 if size_expr is not None:
                     count = self.const_expr(size_expr)
                     if not 1 <= count <= RAM_BITS // width:
-                        raise self.error(M.ARRAY_SIZE.format(208 // width), _expr_pos(size_expr))
+                        msg = M.ARRAY_SIZE_ZERO if count == 0 else M.ARRAY_SIZE.format(208 // width)
+                        raise self.error(msg, _expr_pos(size_expr))
                 groups[width].append((d, width, count))
         off = USER_RAM_START
         names = {16: "words", 8: "bytes", 4: "nibbles", 1: "bits"}

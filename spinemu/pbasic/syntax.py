@@ -50,8 +50,15 @@ def get_parser() -> Lark:
 
 
 def read_source(path: str) -> str:
-    """A source file as text: UTF-8 if it decodes, otherwise Windows-1252 (the Stamp editor's)."""
-    data = Path(path).read_bytes()
+    """A source file as text: UTF-8 if it decodes, otherwise Windows-1252 (the Stamp editor's).
+
+    Raises:
+        ParseError: the file cannot be read.
+    """
+    try:
+        data = Path(path).read_bytes()
+    except OSError as e:
+        raise ParseError(M.CANNOT_READ.format(e.strerror or e), path=str(path)) from None
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError:
@@ -138,6 +145,8 @@ def _describe_expected(expected: set) -> str:
         # LALR merges states, so the other candidates are often noise: say
         # what the BS2 tokenizer says.
         return "':' or end of line"
+    if {"HIGH", "GOSUB", "DEBUG"} <= names:
+        return "a label, variable, or instruction"
     if names & {"NAME", "DECNUM"} and names & {"UNOP", "LPAR", "MINUS"}:
         parts.append("a constant, variable, unary operator, or '('")
         names -= _OPERAND

@@ -73,7 +73,7 @@ def test_unknown_pbasic_version():
     ("I2COUT 0, $A0, [1]", 3, 1, "BS2p"),
     ("x VAR Byte\nx = Main\nMain:", 4, 5, "is a label"),
     ("c CON 5\nc = 1", 4, 1, "expected a variable"),
-    ("x VAR Byte\nx = 5 ! 3", 4, 7, "unexpected character '!'"),
+    ("x VAR Byte\nx = 5 ! 3", 4, 7, "unrecognized character '!'"),
     ("LOW 3\nDEBUG CR(1)", 4, 7, "not a variable and cannot be indexed"),
 ])
 def test_bad_pbasic_gets_file_line_col_errors(body, line, col, words):
@@ -98,3 +98,9 @@ def test_compile_file_reads_a_path(tmp_path):
 
 def test_errors_are_spin_error_subclasses():
     assert issubclass(ParseError, SpinError) and issubclass(CompileError, SpinError)
+
+
+def test_a_missing_file_is_a_spin_error_not_a_traceback(tmp_path):
+    with pytest.raises(SpinError) as info:
+        compile_file(tmp_path / "nope.bs2")
+    assert info.value.path.endswith("nope.bs2") and "cannot read" in info.value.message
