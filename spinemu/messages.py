@@ -110,6 +110,7 @@ FILE_TOO_BIG = "the program needs {size} bytes, more than the 32 KB of hub RAM"
 OBJ_TOO_BIG = "object '{name}' is too big ({size} bytes)"
 JUMP_TOO_FAR = "this block is too long to jump over"
 TOO_MANY_METHODS = "an object can have at most 255 methods and objects"
+BAD_BUILTIN_USE = "'{name}' cannot be used like this here (wrong place or wrong number of parameters)"
 COGNEW_SPIN_OBJECT = "cognew/coginit can only start a method of this object"
 BAD_COGNEW = "cognew needs a method call or an address and a parameter"
 

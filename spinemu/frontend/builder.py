@@ -269,16 +269,12 @@ class AstBuilder:
         return NameRef(self.pos(ch[0]), ch[0].value, ch[2] if len(ch) > 1 else None)
 
     def member_ref(self, ch):
-        name = ch[0]
-        if ch[1].type == "LSQB":
-            index, size_tok, rest = ch[2], ch[5], ch[6:]
-        else:
-            index, size_tok, rest = None, ch[2], ch[3:]
+        name, size_tok, rest = ch[0], ch[2], ch[3:]
         sub = rest[1] if rest else None
         if name.type == "RESULT":
             base = ResultRef(self.pos(name))
         else:
-            base = NameRef(self.pos(name), name.value, index)
+            base = NameRef(self.pos(name), name.value)
         return MemberRef(self.pos(name), base, SIZES[size_tok.value.lower()], sub)
 
     def mem_ref(self, ch):
