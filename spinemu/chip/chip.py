@@ -133,6 +133,11 @@ class Chip:
         self.warnings: list = []
         self._seq = 0
         self._started = False
+        #: when a list, every bytecode is appended to it as
+        #: ``(cog, pc, op, t_start, t_fetched, t_next, stack_before, stack_after)``
+        #: (the instrumented loop; used by the timing derivation and debugging)
+        self.recorder = None
+        self.last_target = None     # the target value of the latest assignment operator
         self.now = 0
 
     # ------------------------------------------------------------------ pins
@@ -200,6 +205,7 @@ class Chip:
         c.state = STOPPED
         c.pin_wait = None
         c.t = _NEVER
+        self.now = max(self.now, t)
         self.cog_events.append((t, c.id, "stop", why))
         self._seq += 1
         self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, False))
@@ -283,11 +289,11 @@ class Chip:
 
     # ------------------------------------------------------------------ pin waits
     def wait_pins(self, c: Cog, mask: int, state: int, equal: bool, tf: int) -> int:
-        T = self.timing
-        t = tf + T.waitpin_issue
+        issue, after = self.timing.waitpin[equal]
+        t = tf + issue
         if ((self.ina(t) & mask) == state) == equal:
-            return T.waitpin_issue + T.waitpin_after
-        c.pin_wait = (mask, state, equal, T.waitpin_after)
+            return issue + after
+        c.pin_wait = (mask, state, equal, after)
         c.state = PIN_WAIT
         self._pin_waiters.append(c)
         raise Reschedule(_NEVER - tf)
@@ -380,11 +386,13 @@ class Chip:
                 if nxt is not None and nxt < until:
                     until = max(nxt, c.t + 1)
             try:
-                self._run_spin(c, until)
+                if self.recorder is None:
+                    self._run_spin(c, until)
+                else:
+                    self._run_spin_traced(c, until)
             except RebootRequested:
                 self.now = c.t
                 return "reboot"
-            self.now = max(self.now, min(c.t, limit) if c.state != STOPPED else self.now)
             if progress is not None and self.now >= next_report:
                 progress(self.now)
                 next_report = self.now + 10_000_000
@@ -409,10 +417,8 @@ class Chip:
         except Reschedule as e:
             t = tf + e.rest
             n += 1
-        except CogStopped as e:
-            n += 1
-            c.bytecodes += n
-            self.now = max(self.now, tf + e.rest)
+        except CogStopped:
+            c.bytecodes += n + 1
             return
         except RebootRequested:
             c.bytecodes += n + 1
@@ -423,6 +429,36 @@ class Chip:
         c.bytecodes += n
         if c.state == RUNNING:
             c.t = t
+
+    def _run_spin_traced(self, c: Cog, limit: int) -> None:
+        """The instrumented twin of :meth:`_run_spin`: one bytecode at a time, recorded."""
+        L, W = self.mem_longs, self.mem_words
+        while c.state == RUNNING and c.t < limit:
+            pc, t, sp = c.pc, c.t, c.sp
+            before = tuple(L[((sp - 4 * k) & 0xFFFF) >> 2] for k in range(1, 5))
+            op = self.mem[pc]
+            if 0x30 <= op <= 0x33:                  # frames unwound, and is the result pushed
+                d, frames = c.dbase, 1
+                while op < 0x32 and not W[((d - 8) & 0xFFFF) >> 1] & 2 and frames < 64:
+                    d = W[((d - 4) & 0xFFFF) >> 1]
+                    frames += 1
+                before = before + (frames, not W[((d - 8) & 0xFFFF) >> 1] & 1)
+            elif op == 0x17:                        # characters STRCOMP will compare
+                a, b, n = before[1] & 0xFFFF, before[0] & 0xFFFF, 0
+                while True:
+                    x, y = self.mem[(a + n) & 0xFFFF], self.mem[(b + n) & 0xFFFF]
+                    n += 1
+                    if x != y or x == 0:
+                        break
+                before = before + (n,)
+            self.last_target = None
+            self._run_spin(c, t + 1)
+            sp = c.sp
+            after = tuple(L[((sp - 4 * k) & 0xFFFF) >> 2] for k in range(1, 3))
+            t_next = c.t if c.state == RUNNING else self.now
+            tf = t + 12
+            tf += (c.hub_phase - tf) & 15
+            self.recorder.append((c.id, pc, op, t, tf, t_next, before, after, self.last_target))
 
     # ------------------------------------------------------------------ trace
     def _build_trace(self, end: int) -> PinTrace:

@@ -131,21 +131,24 @@ def build_handlers(chip, timing: Timing):
     reg_read, reg_write = regs.read, regs.write
 
     # ------------------------------------------------------------------ assignment operators
-    def _assign(c, a, v, inc_mask, tf):
+    def _assign(c, a, v, inc_mask, reg):
         """Apply assignment operator ``a`` to the target value ``v``.
 
         Like the ROM, every operator but WRITE first leaves the old value at
         the top of the stack, and the result (or the old value, for the post
         operators) ends there; the ``p`` bit decides whether it stays pushed.
-        Returns ``(new, rest)``: the value to store and the operator's cycles.
+        Returns ``(new, rest)``: the value to store and the operator's cycles
+        (``reg``: the target is a cog register, whose write-back costs differ).
         """
+        tab = T.assign_reg if reg else T.assign_mem
         push_it = a & 0x80
         b = a & 0x7F
         sp = c.sp
+        chip.last_target = v
         if b == 0:                                      # WRITE: the value is on the stack
             if not push_it:
                 c.sp = sp - 4
-            return L[(sp - 4) >> 2], T.assign[0] + T.assign_push[push_it != 0]
+            return L[(sp - 4) >> 2], tab[a]
         L[sp >> 2] = v
         if b & 0x40:
             if b & 0x20:
@@ -157,13 +160,13 @@ def build_handlers(chip, timing: Timing):
                 L[sp >> 2] = new
                 if push_it:
                     c.sp = sp + 4
-                return new, T.math_assign(f, v, 0) + T.assign_push[push_it != 0]
+                return new, T.math_assign(reg, f, v, 0, push_it != 0)
             y = L[(sp - 4) >> 2]
             new = BINARY[f](v, y)
             L[(sp - 4) >> 2] = new
             if not push_it:
                 c.sp = sp - 4
-            return new, T.math_assign(f, v, y) + T.assign_push[push_it != 0]
+            return new, T.math_assign(reg, f, v, y, push_it != 0)
         if b == 0x02 or b == 0x06:                      # REPEAT [STEP]
             to = _signed(L[(sp - 4) >> 2])
             frm = _signed(L[(sp - 8) >> 2])
@@ -173,7 +176,7 @@ def build_handlers(chip, timing: Timing):
             else:
                 step = 1
                 c.sp = sp - 8
-            off, _ = jump_operand(c)
+            off, long_ = jump_operand(c)
             x = _signed(v)
             if frm <= to:
                 x += step
@@ -183,7 +186,7 @@ def build_handlers(chip, timing: Timing):
                 inside = to <= x <= frm
             if inside:
                 c.pc = (c.pc + off) & 0xFFFF
-            return x & MASK32, T.repeat[(b == 0x06, inside)]
+            return x & MASK32, T.repeat[(reg, b == 0x06, inside, long_)]
         if b == 0x08:
             new = random_forward(v)
         elif b == 0x0C:
@@ -202,7 +205,7 @@ def build_handlers(chip, timing: Timing):
             if b & 0x08:                                # post: the old value stays on the stack
                 if push_it:
                     c.sp = sp + 4
-                return new, T.assign[b] + T.assign_push[push_it != 0]
+                return new, tab[a]
         else:
             raise chip.fault(c, c.pc - 1, f"unknown assignment operator ${a:02X}")
         if new is None:                                 # x~ / x~~: old value stays on the stack
@@ -211,7 +214,7 @@ def build_handlers(chip, timing: Timing):
             L[sp >> 2] = new
         if push_it:
             c.sp = sp + 4
-        return new, T.assign[b] + T.assign_push[push_it != 0]
+        return new, tab[a]
 
     # ------------------------------------------------------------------ $00-$3F
     def op_frame(c, op, tf):
@@ -490,7 +493,7 @@ def build_handlers(chip, timing: Timing):
 
     def op_pop_spr(c, op, tf):
         r = 0x1F0 + (pop(c) & 0xF)
-        reg_write(c, r, pop(c), tf + T.spr_write_at)
+        reg_write(c, r, pop(c), tf + T.spr_pop - 4)     # registers change in the last instruction
         return T.spr_pop
 
     def op_using_spr(c, op, tf):
@@ -498,8 +501,8 @@ def build_handlers(chip, timing: Timing):
         a = mem[c.pc]
         c.pc += 1
         v = reg_read(c, r, tf + T.spr_read_at)
-        new, rest = _assign(c, a, v, MASK32, tf)
-        reg_write(c, r, new, tf + T.spr_using_write_at + rest)
+        new, rest = _assign(c, a, v, MASK32, True)
+        reg_write(c, r, new, tf + T.spr_using + rest - 4)
         return T.spr_using + rest
 
     def op_waitvid(c, op, tf):
@@ -523,10 +526,11 @@ def build_handlers(chip, timing: Timing):
         return T.locknew[op == 0x29]
 
     def op_lockset(c, op, tf):
-        was = chip.lockset(pop(c) & 7, op in (0x2A, 0x2E))
+        setting = op in (0x2A, 0x2E)
+        was = chip.lockset(pop(c) & 7, setting)
         if op < 0x2C:
             push(c, MASK32 if was else 0)
-        return T.lockset[op < 0x2C]
+        return T.lockset[("lockset" if setting else "lockclr", op < 0x2C)]
 
     def op_return(c, op, tf):
         if op & 1:
@@ -592,7 +596,7 @@ def build_handlers(chip, timing: Timing):
                 lo, hi = (a2, b2) if rev else (b2, a2)
                 width = hi - lo + 1
         field = (1 << width) - 1
-        key = (op, access, r in (0x1F4, 0x1F6))
+        key = (op, access)
         if access == 0:
             v = (reg_read(c, r, tf + T.reg_read_at[key]) >> lo) & field
             push(c, _reverse_bits(v, width) if rev else v)
@@ -604,7 +608,7 @@ def build_handlers(chip, timing: Timing):
             if width < 32:
                 old = reg_read(c, r, tf + T.reg_read_at[key])
                 v = (old & ~(field << lo)) | (v << lo)
-            reg_write(c, r, v, tf + T.reg_write_at[key])
+            reg_write(c, r, v, tf + T.reg[key] - 4)
             return T.reg[key]
         if access == 2:
             a = mem[c.pc]
@@ -613,11 +617,11 @@ def build_handlers(chip, timing: Timing):
             v = (old >> lo) & field
             if rev:
                 v = _reverse_bits(v, width)
-            new, rest = _assign(c, a, v, field, tf)
+            new, rest = _assign(c, a, v, field, True)
             new &= field
             if rev:
                 new = _reverse_bits(new, width)
-            reg_write(c, r, (old & ~(field << lo)) | (new << lo), tf + T.reg_write_at[key] + rest)
+            reg_write(c, r, (old & ~(field << lo)) | (new << lo), tf + T.reg[key] + rest - 4)
             return T.reg[key] + rest
         raise chip.fault(c, c.pc - 2, f"register access ${b:02X} is not a Spin operation")
 
@@ -645,7 +649,7 @@ def build_handlers(chip, timing: Timing):
             pc = c.pc
             aop = mem[pc]
             c.pc = pc + 1
-            new, rest = _assign(c, aop, L[a >> 2], MASK32, tf)
+            new, rest = _assign(c, aop, L[a >> 2], MASK32, False)
             if a < 0x8000:
                 L[a >> 2] = new & MASK32
             return T.var_using[op & 0x20 != 0] + rest
@@ -680,7 +684,7 @@ def build_handlers(chip, timing: Timing):
             aop = mem[c.pc]
             c.pc += 1
             v = sized_read[size](a & (0xFFFF, 0xFFFE, 0xFFFC)[size])
-            new, rest = _assign(c, aop, v, MASK32, tf)
+            new, rest = _assign(c, aop, v, MASK32, False)
             sized_write(size, a, new)
             return T.mem_using[key] + rest
         return T.mem[key]

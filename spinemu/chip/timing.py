@@ -25,7 +25,7 @@ from __future__ import annotations
 
 from typing import Optional
 
-__all__ = ["Timing", "load_timing", "hub_align", "segments_rest"]
+__all__ = ["Timing", "load_timing", "hub_align", "segments_rest", "math_param", "MATH_REF"]
 
 
 def hub_align(t: int, phase: int) -> int:
@@ -82,15 +82,16 @@ class Timing:
         self.cogstop, self.cogstop_at = g("cogstop"), g("cogstop/at")
         self.waitcnt_issue, self.waitcnt_min, self.waitcnt_after = (
             g("waitcnt/issue"), g("waitcnt/min"), g("waitcnt/after"))
-        self.waitpin_issue, self.waitpin_after = g("waitpin/issue"), g("waitpin/after")
+        self.waitpin = {True: (g("waitpeq/issue"), g("waitpeq/after")),
+                        False: (g("waitpne/issue"), g("waitpne/after"))}
         self.waitvid_issue, self.waitvid_after = g("waitvid/issue"), g("waitvid/after")
         self.spr_push, self.spr_pop, self.spr_using = g("spr/push"), g("spr/pop"), g("spr/using")
-        self.spr_read_at, self.spr_write_at = g("spr/read_at"), g("spr/write_at")
-        self.spr_using_write_at = g("spr/using_write_at")
+        self.spr_read_at = g("spr/read_at")
         self.coginit = {False: g("coginit"), True: g("coginit/result")}
         self.coginit_done = g("coginit/done")
         self.locknew = {False: g("locknew"), True: g("locknew/result")}
-        self.lockset = {False: g("lockset"), True: g("lockset/result")}
+        self.lockset = {(op, res): g(f"{op}" + ("/result" if res else ""))
+                        for op in ("lockset", "lockclr") for res in (False, True)}
         self.push_const, self.push_mask = g("push_const"), g("push_mask")
         self.push_imm = [0] + [g(f"push_imm/{n}") for n in range(1, 5)]
         self.var = [0] * 0x80
@@ -107,53 +108,98 @@ class Timing:
                     self.mem_using[(op, lg)] = g(name)
                 else:
                     self.mem[(op, lg)] = g(name)
-        self.reg, self.reg_read_at, self.reg_write_at = {}, {}, {}
+        # REG bytecodes; a register is read where the plain read reads it (CNT,
+        # INA and PHS values depend on it), and written by the last instruction
+        self.reg, self.reg_read_at = {}, {}
         for op in (0x3D, 0x3E, 0x3F):
+            read_at = g(f"reg/{op:02x}/0/read_at")
             for access in range(3):
-                for pins in (False, True):
-                    key = (op, access, pins)
-                    name = f"reg/{op:02x}/{access}" + ("/pins" if pins else "")
-                    self.reg[key] = g(name)
-                    self.reg_read_at[key] = g(name + "/read_at")
-                    self.reg_write_at[key] = g(name + "/write_at")
-        self.assign = [0] * 0x80
-        for b in range(0x40):
-            self.assign[b] = g(f"assign/{b:02x}") if b in _ASSIGN_CODES else 0
-        self.assign_push = {False: 0, True: g("assign/push")}
-        self.repeat = {(st, ins): g(f"repeat/{'step' if st else 'plain'}/{'loop' if ins else 'exit'}")
-                       for st in (False, True) for ins in (False, True)}
-        self._math = [g(f"math/{0xE0 + f:02x}") for f in range(32)]
-        self._math_assign = [g(f"math_assign/{0xE0 + f:02x}") for f in range(32)]
-        self._loops = {name: (g(f"{name}/base"), g(f"{name}/per")) for name in _LOOPS}
+                self.reg[(op, access)] = g(f"reg/{op:02x}/{access}")
+                self.reg_read_at[(op, access)] = read_at
+        # non-math assignment operators by their full byte (push bit included), for
+        # targets in hub memory ("mem") and in cog registers ("reg")
+        self.assign_mem, self.assign_reg = (
+            [g(f"assign/{fam}/{a:02x}") if a & 0x7F in _ASSIGN_CODES else 0 for a in range(256)]
+            for fam in ("mem", "reg"))
+        self.repeat = {(fam == "reg", st, ins, lg): g(f"repeat/{fam}/{'step' if st else 'plain'}/"
+                                                       f"{'loop' if ins else 'exit'}" + ("/long" if lg else ""))
+                       for fam in ("mem", "reg") for st in (False, True) for ins in (False, True)
+                       for lg in (False, True)}
+        # plain math bytecodes: one number, or 33 numbers indexed by math_param
+        self._math = [self._table(g(f"math/{0xE0 + f:02x}")) for f in range(32)]
+        self._math_assign = {(fam == "reg", f, p): g(f"math_assign/{fam}/{0xE0 + f:02x}" + ("/push" if p else ""))
+                             for fam in ("mem", "reg") for f in range(32) for p in (False, True)}
+        self._loops = {name: (g(f"{name}/zero") if "strcomp" not in name else 0, g(f"{name}/base"),
+                              g(f"{name}/per")) for name in _LOOPS}
         self.init_segments = data.get("init/segments", [4, "H", 4, "H", 4, "H", 4, "H", 4, "H", 4, "H", 0])
-        self.run_base, self.run_per_param = g("run/base"), g("run/per_param")
+        self._loops["run"] = (g("run/zero"), g("run/base"), g("run/per"))
 
     def _get(self, name: str) -> int:
         v = self.data.get(name)
+        if v is None:
+            v = self._estimate(name)
         if v is None:
             self.missing.add(name)
             return 0
         return v
 
+    def _estimate(self, name: str):
+        """Paths the compiler never emits (or the probes never reached), from their nearest relative.
+
+        * a conditional jump costs the same taken or not (JZ/JNZ/CASE_RANGE
+          were measured equal both ways);
+        * an inc/dec/sign/set/clear operator costs the same for every size
+          field (measured for the sizes Spin uses);
+        * a unary MATH assignment that also pushes costs what the plain one
+          does; NOT costs what ``!`` does;
+        * WRITE without push costs what WRITE with push does;
+        * WAITVID's instruction sits where WAITPEQ's does (spinsim has no
+          video generator to measure it against).
+        """
+        d = self.data
+        parts = name.split("/")
+        if parts[-1] in ("taken", "not"):
+            return d.get("/".join(parts[:-1] + ["not" if parts[-1] == "taken" else "taken"]))
+        if parts[0] == "assign":
+            code = int(parts[2], 16)
+            b = code & 0x7F
+            for alt in ([b ^ s for s in (0x00, 0x02, 0x04, 0x06)] if 0x20 <= b < 0x40 else []) + [b]:
+                for fam in (parts[1], "reg" if parts[1] == "mem" else "mem"):
+                    v = d.get(f"assign/{fam}/{alt | (code & 0x80):02x}") or d.get(f"assign/{fam}/{alt | 0x80:02x}")
+                    if v is not None:
+                        return v
+            return None
+        if parts[0] == "math_assign":
+            op = "e7" if parts[2] == "ff" else parts[2]
+            return d.get(f"math_assign/{parts[1]}/{op}")
+        if parts[0] == "waitvid":
+            return d.get(f"waitpeq/{parts[1]}")
+        return None
+
     # value-dependent paths ------------------------------------------------
+    @staticmethod
+    def _table(v):
+        return v if isinstance(v, list) else [v] * 33
+
     def math(self, f: int, x: int, y: int) -> int:
-        return self._math[f] + self._math_extra(f, x, y)
+        return self._math[f][math_param(0xE0 | f, x, y)]
 
-    def math_assign(self, f: int, x: int, y: int) -> int:
-        return self._math_assign[f] + self._math_extra(f, x, y)
-
-    def _math_extra(self, f: int, x: int, y: int) -> int:
-        return 0
+    def math_assign(self, reg: bool, f: int, x: int, y: int, push: bool) -> int:
+        """Cycles of a MATH assignment operator (``x`` = the target's value)."""
+        table = self._math[f]
+        op = 0xE0 | f
+        return self._math_assign[(reg, f, push)] + table[math_param(op, x, y)] - table[MATH_REF.get(op, 0)]
 
     def _loop(self, name: str, n: int) -> int:
-        base, per = self._loops[name]
-        return base + per * n
+        zero, base, per = self._loops[name]
+        return base + per * n if n else zero
 
     def strsize(self, n: int) -> int:
         return self._loop("strsize", n)
 
     def strcomp(self, n: int, equal: bool) -> int:
-        return self._loop("strcomp", n)
+        """``n``: characters compared, the terminating zero or the first difference included."""
+        return self._loop("strcomp_eq" if equal else "strcomp_ne", n)
 
     def fill(self, size: int, count: int) -> int:
         return self._loop(("bytefill", "wordfill", "longfill")[size], count)
@@ -166,7 +212,8 @@ class Timing:
         return self._get(f"{name}/{'push' if pushed else 'drop'}") + self._get("abort/per_frame") * (frames - 1)
 
     def run(self, params: int) -> int:
-        return self.run_base + self.run_per_param * params
+        """RUN with the ROM routine it hands over to, for a method with ``params`` parameters."""
+        return self._loop("run", params)
 
     def interpreter_start(self, t_first: int, phase: int) -> int:
         """Cycle of the first bytecode of a Spin cog whose first instruction runs at ``t_first``."""
@@ -174,7 +221,7 @@ class Timing:
 
 
 _ASSIGN_CODES = {0x00, 0x08, 0x0C, 0x10, 0x14, 0x18, 0x1C} | {b for b in range(0x20, 0x40) if not b & 1}
-_LOOPS = ("strsize", "strcomp", "bytefill", "wordfill", "longfill", "bytemove", "wordmove", "longmove")
+_LOOPS = ("strsize", "strcomp_eq", "strcomp_ne", "bytefill", "wordfill", "longfill", "bytemove", "wordmove", "longmove")
 
 
 def load_timing(data: Optional[dict] = None) -> Timing:
@@ -183,3 +230,25 @@ def load_timing(data: Optional[dict] = None) -> Timing:
         from .timing_data import DATA
         data = DATA
     return Timing(data)
+
+
+#: the parameter each value-dependent math bytecode's ROM loop depends on
+def math_param(op: int, x: int, y: int) -> int:
+    """Loop parameter of math operator ``op`` for ``x OP y`` (``x`` alone if unary).
+
+    DIV/MOD: bit length of ``|y|`` (0: the divide-by-zero path); ENCODE: the
+    leading zeros of ``x``.  Other operators take the same path whatever the
+    values (parameter 0).
+
+    >>> math_param(0xF6, 100, -7), math_param(0xF1, 1, 0), math_param(0xEC, 5, 6)
+    (3, 31, 0)
+    """
+    if op in (0xF6, 0xF7):
+        return (-y & 0xFFFFFFFF if y & 0x80000000 else y).bit_length()
+    if op == 0xF1:
+        return 32 - x.bit_length()
+    return 0
+
+
+#: the parameter whose cycles the assignment-operator table includes
+MATH_REF = {0xF6: 1, 0xF7: 1, 0xF1: 0}
