@@ -1,0 +1,170 @@
+"""Method code as a list of items, sized the way OpenSpin sizes them, then turned into spans.
+
+A method body is emitted as items: plain bytes, jumps to labels, pushes of a
+label's object address (``case``/``lookup`` end addresses) and pushes of a
+string's address (the method's string pool follows its code).  Each item
+remembers the source position and a short note, so the same list gives the
+binary, the listing and the line table (:class:`Span`).
+
+Sizing follows what OpenSpin 1.00.81 does (observed with probe programs):
+
+* every forward reference is first assumed long (a 2-byte jump offset, a
+  2-byte ``PUSH_IMM2`` address);
+* then the method is laid out again and again; a forward jump is short
+  (1 byte, -64..63) when the distance measured to the target's address *of
+  the previous pass* fits, an address push is ``PUSH_IMM1`` when that address
+  is below 256; a backward jump is sized from its exact distance;
+* this stops when a pass changes no size.  Sizes only ever shrink, so a
+  forward jump that needs exactly 63 stays long.
+* string addresses always use the 2-byte offset form (``87 80 xx``).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Optional
+
+from ..bytecode import encode_signed
+
+__all__ = ["Label", "CodeBuffer", "Span"]
+
+
+class Label:
+    """A place in a method's code (bound by :meth:`CodeBuffer.mark`)."""
+
+    __slots__ = ("name",)
+
+    def __init__(self, name: str = ""):
+        self.name = name
+
+    def __repr__(self) -> str:  # pragma: no cover - debugging aid
+        return f"Label({self.name!r})"
+
+
+@dataclass
+class Span:
+    """Bytes at an offset (object-relative until linked) with their source and a note."""
+
+    offset: int
+    data: bytes
+    pos: object      # frontend Pos or None
+    note: str
+
+
+# item kinds
+_BYTES, _JUMP, _ADDR, _STR, _MARK = range(5)
+
+
+class CodeBuffer:
+    """Collects a method's items; :meth:`layout` sizes them and returns spans."""
+
+    def __init__(self):
+        self.items: list = []
+        self.pos = None
+        self.strings: list[bytes] = []
+        self._string_index: dict = {}
+
+    # -- emitting
+    def emit(self, data, note: str = "") -> None:
+        """Plain bytes (an int, a bytes object or a list of ints)."""
+        if isinstance(data, int):
+            data = bytes((data,))
+        elif not isinstance(data, (bytes, bytearray)):
+            data = bytes(data)
+        self.items.append([_BYTES, bytes(data), self.pos, note])
+
+    def jump(self, prefix: bytes, target: Label, note: str = "") -> None:
+        """``prefix`` (opcode and maybe an operator byte) then a jump offset to ``target``."""
+        self.items.append([_JUMP, bytes(prefix), self.pos, note, target, 2])
+
+    def push_address(self, target: Label, note: str = "") -> None:
+        """Push the object address of ``target`` (PUSH_IMM1 or PUSH_IMM2)."""
+        self.items.append([_ADDR, b"", self.pos, note, target, 2])
+
+    def push_string(self, data: bytes, note: str = "") -> None:
+        """Push the address of a zero-terminated string kept in the method's pool."""
+        offset = sum(len(s) for s in self.strings)
+        self.strings.append(data + b"\0")
+        self.items.append([_STR, b"", self.pos, note, offset])
+
+    def mark(self, label: Label) -> None:
+        self.items.append([_MARK, b"", self.pos, "", label])
+
+    # -- sizing
+    def layout(self, start: int) -> tuple[list, int]:
+        """Size every item for code starting at object offset ``start``.
+
+        Returns:
+            ``(spans, end)``: the spans of code and string pool, and the
+            offset just past the pool.
+
+        Raises:
+            ValueError: a jump does not fit in 15 bits.
+        """
+        items = self.items
+        prev: Optional[dict] = None
+        while True:
+            addr = start
+            here: dict = {}
+            changed = False
+            for item in items:
+                kind = item[0]
+                if kind == _BYTES:
+                    addr += len(item[1])
+                elif kind == _MARK:
+                    here[item[4]] = addr
+                elif kind == _STR:
+                    addr += 3
+                elif kind == _JUMP:
+                    target = item[4]
+                    end_short = addr + len(item[1]) + 1
+                    if target in here:
+                        size = 1 if here[target] - end_short >= -64 else 2
+                    elif prev is None:
+                        size = 2
+                    else:
+                        size = 1 if -64 <= prev[target] - end_short <= 63 else 2
+                    if size != item[5]:
+                        changed = True
+                        item[5] = size
+                    addr += len(item[1]) + size
+                else:  # _ADDR
+                    if prev is None:
+                        size = 2
+                    else:
+                        size = 1 if prev[item[4]] < 0x100 else 2
+                    if size != item[5]:
+                        changed = True
+                        item[5] = size
+                    addr += 1 + size
+            if prev is not None and not changed:
+                break
+            prev = here
+        return self._spans(start, here, addr)
+
+    def _spans(self, start: int, labels: dict, code_end: int) -> tuple[list, int]:
+        spans = []
+        addr = start
+        pool = code_end
+        for item in self.items:
+            kind = item[0]
+            if kind == _MARK:
+                continue
+            if kind == _BYTES:
+                data = item[1]
+            elif kind == _JUMP:
+                size = item[5]
+                offset = labels[item[4]] - (addr + len(item[1]) + size)
+                data = item[1] + encode_signed(offset, force_long=(size == 2))
+            elif kind == _ADDR:
+                value = labels[item[4]]
+                data = bytes((0x38, value)) if item[5] == 1 else bytes((0x39, value >> 8, value & 0xFF))
+            else:  # _STR
+                value = pool + item[4]
+                data = bytes((0x87, 0x80 | (value >> 8), value & 0xFF))
+            if data:
+                spans.append(Span(addr, data, item[2], item[3]))
+            addr += len(data)
+        for s in self.strings:
+            spans.append(Span(addr, s, None, "string"))
+            addr += len(s)
+        return spans, addr

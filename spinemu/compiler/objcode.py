@@ -1,0 +1,196 @@
+"""Compiling one object (one .spin file) into its own bytes, before linking.
+
+An object's bytes (Propeller Manual, "Memory Organization"; spinemu.image)::
+
+    word size  byte methods+1  byte instances      (size: all of this, long-aligned)
+    long per method:   word code offset, word local-variable bytes
+    long per instance: word child offset, word VAR offset  (filled by the linker)
+    DAT, then each method's code followed by its strings
+
+The same file always compiles to the same bytes, so it is compiled once.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Optional
+
+from ..diagnostics import Diagnostic
+from .. import messages as msg
+from ..frontend.ast import NameRef, ObjConst, key
+from ..frontend.constants import Const, ConstError, NotConstant, Undefined, evaluate
+from .code import Span
+from .dat import DatSymbol, assemble_dat
+from .stmts import MethodCompiler
+from .symbols import MethodSymbol, ObjectSymbols, ObjSymbol, layout_vars, method_order
+
+__all__ = ["CompiledObject", "MethodInfo", "ObjectCompiler"]
+
+
+@dataclass
+class MethodInfo:
+    name: str
+    index: int
+    public: bool
+    offset: int          # code offset in the object
+    end: int             # offset after its code and strings
+    locals_size: int
+    nparams: int
+    pos: object
+
+
+@dataclass
+class CompiledObject:
+    """An object's own bytes and what the linker, listing and translator need to know."""
+
+    unit: object
+    data: bytearray
+    n_methods: int
+    instances: list                  # [(ObjSymbol, child unit)] one per table entry
+    var_size: int                    # own VAR bytes (long-aligned)
+    symbols: ObjectSymbols
+    methods: list                    # [MethodInfo] in table order
+    spans: list                      # [Span] object-relative
+    dat_start: int
+    dat_symbols: dict = field(default_factory=dict)
+
+    @property
+    def size(self) -> int:
+        return len(self.data)
+
+    @property
+    def child_table(self) -> int:
+        """Offset of the first child entry in the table."""
+        return 4 * (1 + self.n_methods)
+
+
+class ObjectCompiler:
+    """Compiles an ObjectUnit; errors go to ``errors`` (Diagnostics)."""
+
+    def __init__(self, unit, errors: list, undefined: set):
+        self.unit = unit
+        self.errors = errors
+        self.undefined = undefined
+        self.source = unit.spin.source
+        self.char_bytes = self.source.string_bytes
+        self.symbols = ObjectSymbols(unit.constants)
+
+    # ------------------------------------------------------------------ context for MethodCompiler
+    def error(self, message: str, node, undefined: Optional[str] = None) -> None:
+        if undefined is not None:
+            k = (self.unit.path, key(undefined))
+            if k in self.undefined:
+                return
+            self.undefined.add(k)
+        pos = node.pos
+        self.errors.append(Diagnostic(message, pos.path, pos.line, pos.col, self.source.line(pos.line)))
+
+    def const(self, name: str) -> Optional[Const]:
+        return self.unit.constants.get(name)
+
+    def resolve_const(self, node):
+        if isinstance(node, NameRef) and node.index is None:
+            c = self.const(node.name)
+            if c is None and self.symbols.get(node.name) is None:
+                raise Undefined(node.name, node)
+            return c
+        if isinstance(node, ObjConst):
+            return self.child_const(node)
+        return None
+
+    def child_const(self, node) -> Const:
+        entry = self.unit.child_by_name.get(key(node.obj))
+        if entry is None:
+            raise ConstError(msg.UNDEFINED.format(name=node.obj), node)
+        value = entry[1].constants.get(node.name)
+        if value is None:
+            raise ConstError(msg.UNKNOWN_CONSTANT_IN_OBJECT.format(obj=node.obj, name=node.name), node)
+        return value
+
+    def has_method(self, name: str) -> bool:
+        return isinstance(self.symbols.get(name), MethodSymbol)
+
+    def child_method(self, objsym: ObjSymbol, name: str):
+        pubs = [m for m in objsym.unit.spin.methods if m.public]
+        for i, m in enumerate(pubs):
+            if key(m.name) == key(name):
+                return i + 1, len(m.params)
+        return None
+
+    def count_of(self, node) -> int:
+        try:
+            c = evaluate(node, self.resolve_const, self.char_bytes)
+        except NotConstant as exc:
+            self.error(msg.NEEDS_CONSTANT, exc.node)
+            return 1
+        except ConstError as exc:
+            self.error(exc.message, exc.node, getattr(exc, "name", None))
+            return 1
+        if c.is_float or c.signed < 0:
+            self.error(msg.BAD_COUNT.format(low=0, high="$FFFF", value=c.signed), node)
+            return 1
+        return c.bits
+
+    # ------------------------------------------------------------------ compile
+    def compile(self) -> CompiledObject:
+        spin = self.unit.spin
+        syms = self.symbols
+        report = lambda message, node: self.error(message, node)
+        methods = method_order(spin.methods)
+        for i, m in enumerate(methods):
+            sym = MethodSymbol(m.name, i + 1, m.public, m, len(m.params))
+            if syms.add(m.name, sym, m, report):
+                syms.methods.append(sym)
+        instances = []
+        index = len(methods) + 1
+        for decl, child in self.unit.children:
+            count = 1 if decl.count is None else self.count_of(decl.count)
+            osym = ObjSymbol(decl.name, index, count, child, decl)
+            syms.add(decl.name, osym, decl, report)
+            syms.objects.append(osym)
+            for _ in range(count):
+                instances.append((osym, child))
+            index += count
+        var_syms, var_size = layout_vars(spin.vars, self.count_of)
+        for v in var_syms:
+            syms.add(v.name, v, v, report)
+        syms.vars, syms.var_size = var_syms, var_size
+        table_size = 4 * (1 + len(methods) + len(instances))
+        dat = assemble_dat(self.unit, table_size, self.const, self.child_const, report)
+        for k, sym in dat.symbols.items():
+            if k in syms.table:
+                self.error(msg.DUPLICATE_SAME_LINE.format(name=sym.name), sym)
+            else:
+                syms.table[k] = sym
+        spans = [Span(off, data, pos, note) for off, data, pos, note in dat.spans]
+        offset = table_size + len(dat.data)
+        infos = []
+        code_bytes = bytearray()
+        for sym in syms.methods:
+            mc = MethodCompiler(self, sym.node)
+            buf = mc.compile()
+            try:
+                mspans, end = buf.layout(offset)
+            except ValueError:
+                self.error(msg.JUMP_TOO_FAR, sym.node)
+                mspans, end = [], offset
+            infos.append(MethodInfo(sym.name, sym.index, sym.public, offset, end, mc.locals_size,
+                                    sym.nparams, sym.node.pos))
+            for s in mspans:
+                code_bytes += s.data
+            spans.extend(mspans)
+            offset = end
+        size = (offset + 3) & ~3
+        data = bytearray(size)
+        data[0:2] = size.to_bytes(2, "little")
+        data[2] = len(methods) + 1
+        data[3] = len(instances)
+        for i, info in enumerate(infos):
+            data[4 + 4 * i: 8 + 4 * i] = info.offset.to_bytes(2, "little") + \
+                info.locals_size.to_bytes(2, "little")
+        data[table_size:table_size + len(dat.data)] = dat.data
+        data[table_size + len(dat.data):offset] = code_bytes
+        spans.insert(0, Span(0, bytes(data[:table_size]), None, "object table"))
+        if size > offset:
+            spans.append(Span(offset, bytes(size - offset), None, "padding"))
+        return CompiledObject(self.unit, data, len(methods), instances, var_size, syms, infos, spans,
+                              table_size, dat.symbols)

@@ -1,0 +1,201 @@
+"""The compiler's public API: :func:`compile_file`, :func:`compile_source`, :class:`CompiledProgram`.
+
+>>> prog = compile_source("PUB main\\n  outa[0]~~\\n")
+>>> prog.binary[:4].hex(), len(prog.binary)
+('001bb700', 28)
+"""
+from __future__ import annotations
+
+import bisect
+import os
+import tempfile
+from dataclasses import dataclass, field
+from typing import Optional
+
+from ..diagnostics import CompileError, Diagnostic
+from ..frontend.objects import load_program
+from ..image import to_eeprom
+from .link import link, total_var
+from .listing import format_listing
+from .objcode import ObjectCompiler
+
+__all__ = ["compile_file", "compile_source", "CompiledProgram", "LineTable", "InstanceLayout"]
+
+
+class LineTable:
+    """Hub address -> ``(path, line)`` of the Spin source that made the byte there.
+
+    Call it with an address (``table(0x28)``) or use :meth:`get`.
+    """
+
+    def __init__(self, entries):
+        entries = sorted(entries)
+        self._starts = [e[0] for e in entries]
+        self._entries = entries
+
+    def __call__(self, addr: int):
+        i = bisect.bisect_right(self._starts, addr) - 1
+        if i < 0:
+            return None
+        start, end, path, line = self._entries[i]
+        return (path, line) if start <= addr < end else None
+
+    get = __call__
+
+    def __len__(self) -> int:
+        return len(self._entries)
+
+    def items(self):
+        """``(start, end, path, line)`` ranges in address order."""
+        return list(self._entries)
+
+
+@dataclass
+class InstanceLayout:
+    """Where one object instance lives in hub RAM (for the Spin->Python translator).
+
+    Attributes:
+        path: its source file.
+        name: the OBJ name that made it (``""`` for the top object).
+        pbase: hub address of the object (its table; DAT and code follow).
+        vbase: hub address of its VAR block.
+        var: VAR name -> ``(offset from vbase, element size, count)``.
+        dat: DAT label -> ``(offset from pbase, size, cog address)``.
+        methods: method name -> ``(index, hub address of its code)``.
+        constants: constant name -> 32-bit value.
+        children: one InstanceLayout per object-table entry.
+    """
+
+    path: str
+    name: str
+    pbase: int
+    vbase: int
+    var: dict = field(default_factory=dict)
+    dat: dict = field(default_factory=dict)
+    methods: dict = field(default_factory=dict)
+    constants: dict = field(default_factory=dict)
+    children: list = field(default_factory=list)
+
+
+@dataclass
+class CompiledProgram:
+    """A compiled program: the image and its views.
+
+    Attributes:
+        binary: the ``.binary`` image (what OpenSpin writes with ``-b``).
+        line_table: :class:`LineTable` from hub address to Spin source line.
+        layout: the top object's :class:`InstanceLayout` (with its children).
+        warnings: diagnostics of severity "warning".
+        objects: the compiled objects in placement order.
+    """
+
+    binary: bytes
+    line_table: LineTable
+    layout: InstanceLayout
+    warnings: list
+    objects: list
+    addresses: dict
+
+    def eeprom(self) -> bytes:
+        """The 32 KB EEPROM image (what OpenSpin writes with ``-e``)."""
+        return to_eeprom(self.binary)
+
+    def listing(self, addresses: bool = True) -> str:
+        """The listing: every object's bytes next to the source lines that made them.
+
+        Args:
+            addresses: print hub addresses (golden test listings leave them out).
+        """
+        return format_listing(self, addresses)
+
+
+def _instance_layout(cobj, name, pbase_of, vbase, compiled) -> InstanceLayout:
+    unit = cobj.unit
+    pbase = pbase_of[id(unit)]
+    lay = InstanceLayout(unit.path, name, pbase, vbase)
+    for v in cobj.symbols.vars:
+        lay.var[v.name] = (v.offset, v.size, v.count)
+    for sym in cobj.dat_symbols.values():
+        lay.dat[sym.name] = (sym.offset, sym.size, sym.cog)
+    for m in cobj.methods:
+        lay.methods[m.name] = (m.index, pbase + m.offset)
+    for k, (value, node) in unit.constants.values.items():
+        lay.constants[node.name] = value.bits
+    off = vbase + cobj.var_size
+    for sym, child in cobj.instances:
+        ccobj = compiled[id(child)]
+        lay.children.append(_instance_layout(ccobj, sym.name, pbase_of, off, compiled))
+        off += total_var(ccobj, compiled)
+    return lay
+
+
+def _compile_unit(top_unit) -> CompiledProgram:
+    errors: list[Diagnostic] = []
+    undefined: set = set()
+    compiled: dict = {}
+
+    def visit(unit):
+        if id(unit) in compiled:
+            return
+        for _decl, child in unit.children:
+            visit(child)
+        compiled[id(unit)] = ObjectCompiler(unit, errors, undefined).compile()
+
+    visit(top_unit)
+    if errors:
+        raise CompileError(diagnostics=_sorted(errors))
+    top = compiled[id(top_unit)]
+    image, placed, addr, _var_total = link(top, compiled, errors)
+    if errors:
+        raise CompileError(diagnostics=_sorted(errors))
+    entries = []
+    for c in placed:
+        base = addr[id(c.unit)]
+        for s in c.spans:
+            if s.pos is not None and s.data:
+                entries.append((base + s.offset, base + s.offset + len(s.data), s.pos.path, s.pos.line))
+    vbase = int.from_bytes(image[8:10], "little")
+    layout = _instance_layout(top, "", addr, vbase, compiled)
+    return CompiledProgram(image, LineTable(entries), layout, [], placed, addr)
+
+
+def _sorted(errors: list) -> list:
+    seen = set()
+    out = []
+    for d in errors:
+        k = (d.path, d.line, d.column, d.message)
+        if k not in seen:
+            seen.add(k)
+            out.append(d)
+    return out
+
+
+def compile_file(path: str, include_dirs=()) -> CompiledProgram:
+    """Compile a Spin program (top object ``path``) to a Propeller image.
+
+    Args:
+        path: the top object's .spin file.
+        include_dirs: more folders to look for OBJ files in (after the source's folder).
+
+    Raises:
+        ParseError: syntax errors.
+        CompileError: anything else wrong (unknown names, missing objects, ...).
+    """
+    return _compile_unit(load_program(os.fspath(path), include_dirs))
+
+
+def compile_source(text: str, name: str = "main.spin", include_dirs=(),
+                   files: Optional[dict] = None) -> CompiledProgram:
+    """Compile Spin source text (and optional extra files ``{name: text}`` for its OBJ lines).
+
+    The text is written to a temporary folder so that object files resolve
+    as they would on disk; ``include_dirs`` are searched after it.
+    """
+    with tempfile.TemporaryDirectory(prefix="spinemu-") as tmp:
+        for fname, body in (files or {}).items():
+            with open(os.path.join(tmp, fname), "w", encoding="utf-8") as fh:
+                fh.write(body)
+        path = os.path.join(tmp, name)
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write(text)
+        return compile_file(path, include_dirs)

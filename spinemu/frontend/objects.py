@@ -1,0 +1,231 @@
+"""Loading a program's object tree and folding each object's CON section.
+
+An object is a .spin file.  ``OBJ`` lines name child objects; a name without
+an extension gets ``.spin``; the file is looked up next to the file that
+names it, then in the include directories (OpenSpin's ``-L``), in order.
+Each file is read and parsed once, however many times it is used.
+
+CON values (Propeller Manual, CON): ``name = expr`` and enumerations
+(``#start``, ``name``, ``name[skip]``).  The counter starts at 0 in each CON
+section and continues across its lines; definitions may refer to constants
+defined further down and to children's constants (``obj#NAME``).
+"""
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from typing import Optional
+
+from ..diagnostics import CompileError, Diagnostic, ParseError
+from .. import messages as msg
+from .ast import ConDef, ConEnumName, ConEnumStart, NameRef, ObjConst, SpinFile, key
+from .constants import Const, ConstError, NotConstant, evaluate
+from .parser import parse_text
+from .source import read_source
+
+__all__ = ["ObjectUnit", "load_program", "resolve_object_file", "ConstantTable"]
+
+
+@dataclass
+class ConstantTable:
+    """An object's constants: lower-case name -> (Const, definition node)."""
+
+    values: dict = field(default_factory=dict)
+
+    def get(self, name: str) -> Optional[Const]:
+        entry = self.values.get(key(name))
+        return entry[0] if entry else None
+
+
+@dataclass
+class ObjectUnit:
+    """One object file: its AST, its children (per OBJ line) and its constants."""
+
+    path: str
+    spin: SpinFile
+    children: list = field(default_factory=list)   # [(ObjDecl, ObjectUnit)]
+    constants: ConstantTable = field(default_factory=ConstantTable)
+    child_by_name: dict = field(default_factory=dict)
+
+    @property
+    def name(self) -> str:
+        return os.path.splitext(os.path.basename(self.path))[0]
+
+
+def resolve_object_file(name: str, from_dir: str, include_dirs=()) -> Optional[str]:
+    """The path of object file ``name`` (``.spin`` added if missing), or ``None``."""
+    fname = name if name.lower().endswith(".spin") else name + ".spin"
+    for d in (from_dir, *include_dirs):
+        cand = os.path.join(d, fname)
+        if os.path.isfile(cand):
+            return cand
+    return None
+
+
+class _Loader:
+    def __init__(self, include_dirs):
+        self.include_dirs = list(include_dirs)
+        self.units: dict[str, ObjectUnit] = {}
+        self.errors: list[Diagnostic] = []
+        self.stack: list[str] = []
+
+    def load(self, path: str) -> Optional[ObjectUnit]:
+        real = os.path.realpath(path)
+        if real in self.units:
+            return self.units[real]
+        source = read_source(path)
+        spin, errors = parse_text(source)
+        self.errors.extend(errors)
+        unit = ObjectUnit(path, spin)
+        self.units[real] = unit
+        self.stack.append(real)
+        here = os.path.dirname(os.path.abspath(path))
+        for decl in spin.objs:
+            child_path = resolve_object_file(decl.filename, here, self.include_dirs)
+            if child_path is None:
+                where = ", ".join([here] + self.include_dirs)
+                self._error(msg.OBJECT_NOT_FOUND.format(name=decl.filename, where=where), decl, spin)
+                continue
+            if os.path.realpath(child_path) in self.stack:
+                self._error(msg.OBJECT_RECURSION.format(name=decl.filename), decl, spin)
+                continue
+            child = self.load(child_path)
+            if child is not None:
+                unit.children.append((decl, child))
+                unit.child_by_name.setdefault(key(decl.name), (decl, child))
+        self.stack.pop()
+        _fold_constants(unit, self.errors)
+        return unit
+
+    def _error(self, text: str, node, spin: SpinFile) -> None:
+        pos = node.pos
+        self.errors.append(Diagnostic(text, pos.path, pos.line, pos.col, spin.source.line(pos.line)))
+
+
+def _fold_constants(unit: ObjectUnit, errors: list) -> None:
+    """Evaluate the CON section of ``unit`` (its children are already folded)."""
+    spin = unit.spin
+    table = unit.constants.values
+    pending_undefined: dict = {}
+
+    def resolve(node):
+        if isinstance(node, NameRef) and node.index is None:
+            entry = table.get(key(node.name))
+            if entry is not None:
+                return entry[0]
+            pending_undefined.setdefault(id(node), node)
+            raise NotConstant(node)
+        if isinstance(node, ObjConst):
+            child = unit.child_by_name.get(key(node.obj))
+            if child is None:
+                raise ConstError(msg.UNDEFINED.format(name=node.obj), node)
+            value = child[1].constants.get(node.name)
+            if value is None:
+                raise ConstError(msg.UNKNOWN_CONSTANT_IN_OBJECT.format(obj=node.obj, name=node.name), node)
+            return value
+        raise NotConstant(node)
+
+    char_bytes = spin.source.string_bytes
+    # which CON section each item is in: enumerations restart at 0 per section
+    items = _con_items_by_section(spin)
+    done: set = set()
+    reported: set = set()
+    progress = True
+    while progress:
+        progress = False
+        pending_undefined.clear()
+        counter: Optional[int] = 0
+        section = None
+        for sec, item in items:
+            if sec != section:
+                section, counter = sec, 0
+            if isinstance(item, ConEnumStart):
+                try:
+                    value = evaluate(item.value, resolve, char_bytes)
+                    if value.is_float:
+                        raise ConstError(msg.INTEGER_AND_FLOAT, item.value)
+                    counter = value.bits
+                except NotConstant:
+                    counter = None
+                except ConstError as exc:
+                    _report(errors, spin, exc.node, exc.message, reported)
+                    counter = None
+                continue
+            if isinstance(item, ConEnumName):
+                step = 1
+                if item.skip is not None:
+                    try:
+                        step = evaluate(item.skip, resolve, char_bytes).bits
+                    except NotConstant:
+                        step = None
+                    except ConstError as exc:
+                        _report(errors, spin, exc.node, exc.message, reported)
+                        step = None
+                if id(item) not in done and counter is not None:
+                    progress |= _define(table, item.name, Const(counter & 0xFFFFFFFF), item, errors, spin, reported)
+                    done.add(id(item))
+                counter = None if counter is None or step is None else counter + step
+                continue
+            if id(item) in done:
+                continue
+            try:
+                value = evaluate(item.value, resolve, char_bytes)
+            except NotConstant:
+                continue
+            except ConstError as exc:
+                _report(errors, spin, exc.node, exc.message, reported)
+                done.add(id(item))
+                continue
+            _define(table, item.name, value, item, errors, spin, reported)
+            done.add(id(item))
+            progress = True
+    for node in pending_undefined.values():
+        _report(errors, spin, node, msg.UNDEFINED.format(name=node.name), reported)
+
+
+def _con_items_by_section(spin: SpinFile) -> list:
+    """``(section number, item)`` for every CON item, in source order."""
+    starts = [line for kind, line in spin.sections if kind == "CON"]
+    out = []
+    for item in spin.cons:
+        sec = 0
+        for i, line in enumerate(starts):
+            if item.pos.line >= line:
+                sec = i
+        out.append((sec, item))
+    return out
+
+
+def _define(table, name, value, node, errors, spin, reported) -> bool:
+    k = key(name)
+    if k in table:
+        prev = table[k][1]
+        _report(errors, spin, node, msg.DUPLICATE.format(name=name, line=prev.pos.line), reported)
+        return False
+    table[k] = (value, node)
+    return True
+
+
+def _report(errors, spin, node, text, reported) -> None:
+    pos = node.pos
+    ident = (pos.line, pos.col, text)
+    if ident in reported:
+        return
+    reported.add(ident)
+    errors.append(Diagnostic(text, pos.path, pos.line, pos.col, spin.source.line(pos.line)))
+
+
+def load_program(path: str, include_dirs=()) -> ObjectUnit:
+    """Load, parse and fold the constants of the object tree rooted at ``path``.
+
+    Raises:
+        ParseError: syntax errors (of every file).
+        CompileError: missing object files, bad or unknown constants.
+    """
+    loader = _Loader(include_dirs)
+    unit = loader.load(path)
+    if loader.errors:
+        syntax = any(d for d in loader.errors if d.message.startswith("unexpected"))
+        cls = ParseError if syntax else CompileError
+        raise cls(diagnostics=loader.errors)
+    return unit
