@@ -185,3 +185,17 @@ def test_render_steps_lists_the_first_steps():
     assert "    1           0   0.000000 s   0110      ?" in text
     assert "    2       15000   0.015000 s   1100     +1    15.000 ms" in text
     assert "... 4 more steps" in text
+
+
+def test_spinemu_chip_run_of_the_spin_translation_tells_the_same_story():
+    """The same comparison with the Spin side run on spinemu's own chip model."""
+    from spinemu.chip import Chip
+    from spinemu.compiler import compile_file
+
+    spin = Chip(compile_file(str(ROOT / "spin_src" / "simple_stepper.spin")).binary)
+    spin_trace = spin.run(max_cycles=80_000_000).trace          # 1 s at 80 MHz
+    bs2 = run_file(BS2_DEMO, seconds=3)
+    cmp = compare_step_sequences(bs2.trace, [4, 5, 6, 7], spin_trace, [1, 2, 3, 4])
+    assert cmp.first_difference == 96
+    ta, tb = cmp.timing(0, 47)
+    assert ta / tb == pytest.approx(2.957, abs=0.002)
