@@ -9,14 +9,15 @@ from __future__ import annotations
 
 # ----------------------------------------------------------------------------- files
 CANNOT_READ = "cannot read the file: {reason}"
+EMPTY_FILE = "the file is empty"
 BAD_ENCODING = "the file is not valid UTF-16: {detail}"
 OBJECT_NOT_FOUND = "cannot find object file '{name}' (looked in {where})"
 DAT_FILE_NOT_FOUND = "cannot find data file '{name}' (looked in {where})"
 OBJECT_RECURSION = "object '{name}' includes itself"
 
 # ----------------------------------------------------------------------------- lexer
-UNTERMINATED_BRACE = "this '{{' comment is never closed with '}}'"
-UNTERMINATED_DOC = "this '{{{{' comment is never closed with '}}}}'"
+UNTERMINATED_BRACE = "the '{{' comment opened on line {line} is never closed with '}}'"
+UNTERMINATED_DOC = "the '{{{{' comment opened on line {line} is never closed with '}}}}'"
 STRAY_CLOSE_BRACE = "'}}' without a '{{' to open a comment"
 UNTERMINATED_STRING = "this string has no closing '\"'"
 BAD_NUMBER = "'{text}' is not a valid number"
@@ -25,11 +26,13 @@ DESIGNATOR_NOT_FIRST = "'{word}' starts a section and must be in the first colum
 HERE_OUTSIDE_DAT = "'$' (the current address) can only be used in a DAT section"
 
 # ----------------------------------------------------------------------------- parser
+DEV_SECTION = "DEV sections (precompile/archive) are not supported"
 UNEXPECTED = "unexpected {found}{expected}"
 EXPECTED_TAIL = "; expected {what}"
 ELSE_COLUMN = "'{word}' must line up with its '{head}' (column {col})"
 POST_CONDITION_COLUMN = "'{word}' must line up with its 'repeat' (column {col})"
-INDENT_UNEXPECTED = "this line is indented more than the line above it"
+INDENT_DEV_SECTION = "DEV sections (precompile/archive) are not supported"
+UNEXPECTED = "this line is indented more than the line above it"
 EMPTY_STRING = "empty string"
 
 #: What to call each token kind in messages ("expected an expression").
@@ -80,7 +83,7 @@ UNKNOWN_METHOD_IN_OBJECT = "object '{obj}' has no public method '{name}'"
 UNKNOWN_CONSTANT_IN_OBJECT = "object '{obj}' has no constant '{name}'"
 WRONG_ARG_COUNT = "'{name}' takes {expected} parameter{s}, not {got}"
 RESERVED_NAME = "'{name}' is a reserved word"
-NO_PUB = "the top object has no PUB method to start"
+NO_PUB = "no PUB method: a program starts with the first PUB method of its top object"
 NO_METHODS_OR_DAT = "this object has no methods"
 
 # ----------------------------------------------------------------------------- constants

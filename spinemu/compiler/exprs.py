@@ -428,7 +428,7 @@ class ExprCompiler:
                     data += self.obj.char_bytes(a.text)
                 else:
                     data.append(self.fold(a).bits & 0xFF)
-            code.push_string(bytes(data), "string")
+            code.push_string(bytes(data), "string", node.pos)
             return
         if name in _FOLDED_BUILTINS:
             if not want or len(args) != 1:

@@ -140,7 +140,9 @@ def link(top, compiled: dict, errors: list):
     dbase = vbase + var_total + 8
     first = top.methods[0] if top.methods else None
     if first is None or not first.public:
-        errors.append(Diagnostic(msg.NO_PUB, top.unit.path))
+        source = top.unit.spin.source
+        line, col = source.end_position()
+        errors.append(Diagnostic(msg.NO_PUB, source.path, line, col, source.line(line)))
         return bytes(image), placed, addr, var_total
     pcurr = HEADER_SIZE + first.offset
     dcurr = dbase + 4 + 4 * first.nparams + first.locals_size

@@ -16,7 +16,7 @@ from typing import Optional
 
 from ..diagnostics import Diagnostic
 from .. import messages as msg
-from ..frontend.ast import NameRef, ObjConst, key
+from ..frontend.ast import AddrOf, NameRef, ObjConst, key
 from ..frontend.constants import Const, ConstError, NotConstant, Undefined, evaluate
 from .code import Span
 from .dat import DatSymbol, assemble_dat
@@ -88,11 +88,21 @@ class ObjectCompiler:
         return self.unit.constants.get(name)
 
     def resolve_const(self, node):
+        """Constants for ``constant()`` and counts; a DAT label (with or without @) is its offset."""
+        if isinstance(node, AddrOf) and isinstance(node.target, NameRef) and node.target.index is None:
+            node = node.target
+            if not isinstance(self.symbols.get(node.name), DatSymbol):
+                return None
         if isinstance(node, NameRef) and node.index is None:
             c = self.const(node.name)
-            if c is None and self.symbols.get(node.name) is None:
+            if c is not None:
+                return c
+            sym = self.symbols.get(node.name)
+            if sym is None:
                 raise Undefined(node.name, node)
-            return c
+            if isinstance(sym, DatSymbol):
+                return Const(sym.offset)
+            return None
         if isinstance(node, ObjConst):
             return self.child_const(node)
         return None

@@ -89,7 +89,9 @@ class LexedFile:
     errors: list    # [Diagnostic]
 
 
-DESIGNATORS = {"con", "var", "obj", "pub", "pri", "dat"}
+DESIGNATORS = {"con", "var", "obj", "pub", "pri", "dat", "dev"}
+#: words OpenSpin reserves without giving them a meaning in Spin 1 code
+_RESERVED = ("archive", "enc", "ones", "precompile")
 
 _BLOCK_WORDS = ("if ifnot elseif elseifnot else case other repeat from to step while until "
                 "next quit return abort result")
@@ -143,6 +145,8 @@ def _keywords() -> dict:
     kw.update({"and": "AND", "or": "OR", "not": "NOT"})
     for w in DESIGNATORS:
         kw[w] = "SECTION"
+    for w in _RESERVED:
+        kw[w] = "RESERVED"
     return kw
 
 
@@ -191,8 +195,10 @@ _NEWLINE_RE = re.compile(r"\r\n|\r|\n")
 
 
 class _Lexer:
-    def __init__(self, text: str, path: str):
+    def __init__(self, text: str, path: str, eof=None):
         self.text = text
+        lines = text.splitlines()
+        self.eof = eof or (len(lines) + 1, 1)
         self.path = path
         self.sections: list[Section] = [Section("CON", 1)]
         self.comments: dict[int, list] = {}
@@ -225,6 +231,11 @@ class _Lexer:
             self.tokens = []
         self.dat_state = 0
 
+    def _unterminated(self, message: str) -> None:
+        """An unclosed comment is reported at the end of the file (as OpenSpin does)."""
+        line, col = self.eof
+        self.error(message, line, col)
+
     def _add_comment(self, kind: str, body: str, line: int, col: int, end_line: int) -> None:
         self.comments.setdefault(line, []).append(Comment(kind, body, line, col, end_line))
 
@@ -241,7 +252,7 @@ class _Lexer:
         if text.startswith("{{", pos):
             end = text.find("}}", pos + 2)
             if end < 0:
-                self.error(msg.UNTERMINATED_DOC, line, col, 2)
+                self._unterminated(msg.UNTERMINATED_DOC.format(line=line))
                 end = len(text) - 2
             stop, kind, body = end + 2, "{{", text[pos + 2:end]
         else:
@@ -257,7 +268,7 @@ class _Lexer:
                         break
                 i += 1
             if i >= n:
-                self.error(msg.UNTERMINATED_BRACE, line, col)
+                self._unterminated(msg.UNTERMINATED_BRACE.format(line=line))
                 i = n - 1
             stop, kind, body = i + 1, "{", text[pos + 1:i]
         # keep line bookkeeping right across the comment's line breaks
@@ -390,7 +401,7 @@ class _Lexer:
         return end
 
 
-def tokenize(text: str, path: str = "<input>") -> LexedFile:
+def tokenize(text: str, path: str = "<input>", eof=None) -> LexedFile:
     """Split ``text`` into sections of token lines; collect comments and lexical errors.
 
     >>> lexed = tokenize("CON\\n  X = $10 ' sixteen\\nPUB main\\n  x := X\\n")
@@ -401,4 +412,4 @@ def tokenize(text: str, path: str = "<input>") -> LexedFile:
     >>> lexed.comments[2][0].text
     ' sixteen'
     """
-    return _Lexer(text, path).run()
+    return _Lexer(text, path, eof).run()

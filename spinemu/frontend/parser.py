@@ -15,6 +15,7 @@ from .builder import AstBuilder
 from .lalr import Parser, ParseFailure, load_tables
 from .layout import layout
 from .lexer import TAB_WIDTH, Token, tokenize, KEYWORDS, _OPERATORS
+from .preprocess import preprocess
 from .source import SourceText, read_source
 
 __all__ = ["parse_source", "parse_file", "parse_text"]
@@ -85,8 +86,13 @@ def _failure(exc: ParseFailure, source: SourceText) -> Diagnostic:
 
 def parse_text(source: SourceText) -> tuple[SpinFile, list]:
     """Parse ``source``; returns the file and the list of error diagnostics (maybe empty)."""
-    lexed = tokenize(source.text, source.path)
+    text, pp_errors = preprocess(source.text)
+    lexed = tokenize(text, source.path, source.eof)
     errors: list[Diagnostic] = list(lexed.errors)
+    for line, text_ in pp_errors:
+        errors.append(Diagnostic(text_, source.path, line, 1, source.line(line)))
+    if not source.text.strip():
+        errors.append(Diagnostic(msg.EMPTY_FILE, source.path))
     spin = SpinFile(source.path, source, comments=lexed.comments)
     parser = Parser(_get_tables(), AstBuilder(source.path))
 
@@ -107,6 +113,11 @@ def parse_text(source: SourceText) -> tuple[SpinFile, list]:
     for section in lexed.sections:
         spin.sections.append((section.kind, section.line))
         kind = section.kind
+        if kind == "DEV":
+            for line in section.lines:
+                tok = line.tokens[0]
+                errors.append(Diagnostic(msg.DEV_SECTION, source.path, tok.line, tok.col, source.line(tok.line)))
+            continue
         if kind in ("PUB", "PRI"):
             layout_errors: list = []
             tokens = layout(section.lines, layout_errors, indent_at)
