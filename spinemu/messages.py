@@ -18,7 +18,7 @@ OBJECT_RECURSION = "object '{name}' includes itself"
 # ----------------------------------------------------------------------------- lexer
 UNTERMINATED_BRACE = "the '{{' comment opened on line {line} is never closed with '}}'"
 UNTERMINATED_DOC = "the '{{{{' comment opened on line {line} is never closed with '}}}}'"
-STRAY_CLOSE_BRACE = "'}}' without a '{{' to open a comment"
+STRAY_CLOSE_BRACE = "'}' without a '{' to open a comment"
 UNTERMINATED_STRING = "this string has no closing '\"'"
 BAD_NUMBER = "'{text}' is not a valid number"
 BAD_CHARACTER = "unexpected character '{ch}'"
@@ -29,10 +29,9 @@ HERE_OUTSIDE_DAT = "'$' (the current address) can only be used in a DAT section"
 DEV_SECTION = "DEV sections (precompile/archive) are not supported"
 UNEXPECTED = "unexpected {found}{expected}"
 EXPECTED_TAIL = "; expected {what}"
+SINGLE_EQUAL = "'=' only defines constants (in CON); use ':=' to assign or '==' to compare"
 ELSE_COLUMN = "'{word}' must line up with its '{head}' (column {col})"
 POST_CONDITION_COLUMN = "'{word}' must line up with its 'repeat' (column {col})"
-INDENT_DEV_SECTION = "DEV sections (precompile/archive) are not supported"
-UNEXPECTED = "this line is indented more than the line above it"
 EMPTY_STRING = "empty string"
 
 #: What to call each token kind in messages ("expected an expression").
@@ -66,6 +65,7 @@ FOUND_WORDS = {
 }
 #: Token kinds grouped under one phrase in "expected ..." lists.
 EXPECTED_GROUPS = [
+    ({"IF", "IFNOT", "REPEAT", "CASE", "RETURN", "ABORT", "NEXT", "QUIT"}, "a statement"),
     ({"NAME", "NUMBER", "FLOAT", "STRING", "LPAR", "MINUS", "BANG", "AT", "KCONST"}, "an expression"),
     ({"ASSIGN", "OPASSIGN"}, "an assignment operator"),
     ({"EQEQ", "NE", "LT", "GT", "LE", "GE", "PLUS", "STAR", "SLASH", "AMP"}, "an operator"),
@@ -105,7 +105,9 @@ STRING_TOO_LONG = "strings in expressions must be one character; use string(...)
 ADDRESS_OF_NON_VARIABLE = "'@' needs a variable or a DAT label"
 RANGE_NOT_ALLOWED = "a range (..) is only allowed with a register (dira, outa...)"
 METHOD_AS_VALUE = "method '{name}' used where a value is expected"
-BAD_STRING_ARG = "string() needs constants and strings"
+STRING_CHARACTER_RANGE = "string() characters must be 1 to 255 (strings end with a 0 byte already)"
+STRING_NOT_ALLOWED = "string() is not allowed here (this expression is compiled twice)"
+OTHER_NOT_LAST = "'other' must be the last case"
 LOOKUP_EMPTY = "lookup needs at least one value"
 CASE_WITHOUT_MATCH = "case needs at least one match line"
 TOO_MANY_PARAMS = "a method can have at most 255 parameters and locals"

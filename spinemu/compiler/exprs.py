@@ -425,9 +425,14 @@ class ExprCompiler:
             data = bytearray()
             for a in args:
                 if isinstance(a, Str):
-                    data += self.obj.char_bytes(a.text)
+                    chunk = self.obj.char_bytes(a.text)
                 else:
-                    data.append(self.fold(a).bits & 0xFF)
+                    value = self.fold(a).bits
+                    chunk = bytes((value & 0xFF,)) if 0 < value < 256 else b""
+                if not chunk or 0 in chunk:
+                    self.error(msg.STRING_CHARACTER_RANGE, a)
+                    raise CompileFailure()
+                data += chunk
             code.push_string(bytes(data), "string", node.pos)
             return
         if name in _FOLDED_BUILTINS:

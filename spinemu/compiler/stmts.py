@@ -25,6 +25,7 @@ from ..frontend.ast import (
     PostOp, PreOp, Quit, Range, RepeatCount, RepeatForever, RepeatFrom, RepeatWhile, Return, Unary,
     VARIABLE_NODES, key,
 )
+from ..frontend.source import Pos
 from .code import CodeBuffer, Label
 from .exprs import USING, CompileFailure, ExprCompiler, push_const_bytes
 from .symbols import MethodSymbol, frame_locals
@@ -174,6 +175,9 @@ class MethodCompiler(ExprCompiler):
         other = None
         targets = []
         for item in node.items:
+            if other is not None:
+                self.error(msg.OTHER_NOT_LAST, item)
+                break
             if item.values is None:
                 other = item
                 continue
@@ -204,6 +208,18 @@ class MethodCompiler(ExprCompiler):
             if self.loops:
                 self.loops[-1].cases -= 1
         code.mark(end)
+
+    def no_strings(self, node) -> None:
+        """string() is not allowed where an expression is compiled twice (repeat from/to/step)."""
+        if node is None:
+            return
+        if isinstance(node, Builtin) and node.name == "string":
+            self.error(msg.STRING_NOT_ALLOWED, node)
+            raise CompileFailure()
+        for value in vars(node).values():
+            for child in (value if isinstance(value, list) else [value]):
+                if hasattr(child, "pos") and child is not node and not isinstance(child, Pos):
+                    self.no_strings(child)
 
     # ------------------------------------------------------------------ repeat
     def jmp(self, label, note) -> None:
@@ -258,6 +274,8 @@ class MethodCompiler(ExprCompiler):
     def s_RepeatFrom(self, node: RepeatFrom) -> None:
         code = self.code
         top, nxt, end = Label("repeat"), Label("repeat next"), Label("repeat end")
+        for part in (node.start, node.stop, node.step):
+            self.no_strings(part)
         self.expr(node.start)
         self.var(node.var, 1)
         code.mark(top)

@@ -177,7 +177,7 @@ _TOKEN_RE = re.compile(r"""
 |(?P<ws>[ \t\f\x00]+)
 |(?P<com>'[^\r\n]*)
 |(?P<lbrace>\{)
-|(?P<rbrace>\})
+|(?P<rbrace>\}+)
 |(?P<float>\d[\d_]*\.\d[\d_]*(?:[eE][+-]?\d+)?|\d[\d_]*[eE][+-]?\d+)
 |(?P<dec>\d[\d_]*)
 |(?P<hex>\$[0-9A-Fa-f][0-9A-Fa-f_]*)
@@ -186,6 +186,7 @@ _TOKEN_RE = re.compile(r"""
 |(?P<bin>%[01][01_]*)
 |(?P<name>[A-Za-z_][A-Za-z_0-9]*)
 |(?P<str>"[^"\r\n]*")
+|(?P<badstr>"[^"\r\n]*)
 |(?P<op>""" + _OP_PATTERN + r""")
 """, re.X)
 
@@ -359,6 +360,8 @@ class _Lexer:
             elif kind == "str":
                 self._emit("STRING", value[1:-1], pos)
                 self._operand()
+            elif kind == "badstr":
+                self.error(msg.UNTERMINATED_STRING, self.line, pos - self.line_start + 1)
             elif kind == "op":
                 end = self._op(value, pos)
             elif kind == "here":

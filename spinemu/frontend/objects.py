@@ -67,15 +67,17 @@ class _Loader:
         self.include_dirs = list(include_dirs)
         self.units: dict[str, ObjectUnit] = {}
         self.errors: list[Diagnostic] = []
+        self.syntax_errors = 0
         self.stack: list[str] = []
 
-    def load(self, path: str) -> Optional[ObjectUnit]:
+    def load(self, path: str, source=None) -> Optional[ObjectUnit]:
         real = os.path.realpath(path)
         if real in self.units:
             return self.units[real]
-        source = read_source(path)
+        source = source or read_source(path)
         spin, errors = parse_text(source)
         self.errors.extend(errors)
+        self.syntax_errors += len(errors)
         unit = ObjectUnit(path, spin)
         self.units[real] = unit
         self.stack.append(real)
@@ -215,17 +217,20 @@ def _report(errors, spin, node, text, reported) -> None:
     errors.append(Diagnostic(text, pos.path, pos.line, pos.col, spin.source.line(pos.line)))
 
 
-def load_program(path: str, include_dirs=()) -> ObjectUnit:
+def load_program(path: str, include_dirs=(), source=None) -> ObjectUnit:
     """Load, parse and fold the constants of the object tree rooted at ``path``.
+
+    Args:
+        source: the top file's SourceText, if it is not to be read from ``path``
+            (``path`` still decides where its OBJ files are looked for).
 
     Raises:
         ParseError: syntax errors (of every file).
         CompileError: missing object files, bad or unknown constants.
     """
     loader = _Loader(include_dirs)
-    unit = loader.load(path)
+    unit = loader.load(path, source)
     if loader.errors:
-        syntax = any(d for d in loader.errors if d.message.startswith("unexpected"))
-        cls = ParseError if syntax else CompileError
+        cls = ParseError if loader.syntax_errors else CompileError
         raise cls(diagnostics=loader.errors)
     return unit

@@ -75,11 +75,14 @@ def describe_expected(expected) -> str:
     return ", ".join(words[:-1]) + " or " + words[-1]
 
 
-def _failure(exc: ParseFailure, source: SourceText) -> Diagnostic:
+def _failure(exc: ParseFailure, source: SourceText, start: str) -> Diagnostic:
     tok = exc.token
-    exp = describe_expected(exc.expected)
-    tail = msg.EXPECTED_TAIL.format(what=exp) if exp else ""
-    text = msg.UNEXPECTED.format(found=describe_token(tok), expected=tail)
+    if tok.type == "EQUAL" and start == "method":
+        text = msg.SINGLE_EQUAL
+    else:
+        exp = describe_expected(exc.expected)
+        tail = msg.EXPECTED_TAIL.format(what=exp) if exp else ""
+        text = msg.UNEXPECTED.format(found=describe_token(tok), expected=tail)
     length = max(1, len(tok.value)) if isinstance(tok, Token) else 1
     return Diagnostic(text, source.path, tok.line, tok.col, source.line(tok.line), "error", length)
 
@@ -107,7 +110,7 @@ def parse_text(source: SourceText) -> tuple[SpinFile, list]:
         try:
             return parser.parse(tokens, start)
         except ParseFailure as exc:
-            errors.append(_failure(exc, source))
+            errors.append(_failure(exc, source, start))
             return None
 
     for section in lexed.sections:
@@ -144,6 +147,9 @@ def parse_text(source: SourceText) -> tuple[SpinFile, list]:
                 spin.objs.append(node)
             else:
                 spin.dat.append(node)
+    # a line with a lexical error gets no syntax error on top of it
+    bad_lines = {d.line for d in lexed.errors}
+    errors = [d for d in errors if d in lexed.errors or d.line not in bad_lines]
     errors.sort(key=lambda d: (d.line or 0, d.column or 0))
     return spin, errors
 
