@@ -49,6 +49,8 @@ class DatSymbol:
 
 @dataclass
 class DatResult:
+    """DatResul: see the module docstring."""
+
     data: bytes
     symbols: dict        # key -> DatSymbol (plain labels)
     locals: dict         # (plain key, local key) -> DatSymbol
@@ -205,9 +207,6 @@ class _Assembler:
     def define(self, label, scope, size, hub, cog, reserved) -> None:
         sym = DatSymbol(label.name, size, hub, cog, reserved, label.pos)
         if label.local:
-            if scope is None:
-                self.report(msg.LOCAL_LABEL_WITHOUT_GLOBAL.format(name=label.name), label)
-                return
             k = (scope, key(label.name))
             table = self.locals
         else:
@@ -230,7 +229,12 @@ class _Assembler:
                 pass  # OpenSpin accepts larger overrides: the item is just bigger
             count = 1
             if item.count is not None:
-                count = self.const_now(item.count, cog_here, scope)
+                count = to_signed(self.const_now(item.count, cog_here, scope))
+                if count < 0:
+                    count = 0        # OpenSpin stores nothing for a negative count
+                elif count > 0x8000:
+                    self.report(msg.BAD_COUNT.format(low=0, high="$8000", value=count), item.count)
+                    raise _Abort()
             if isinstance(item.value, Str):
                 values = list(self.char_bytes(item.value.text))
             elif emit:

@@ -483,10 +483,7 @@ class ExprCompiler:
                 # the cog id goes into the frame RUN just built (long[dcurr][-4])
                 self.code.emit(bytes((_OP["REG"], 0x8F)) + push_const_bytes(0xFFFFFFFC) +
                                bytes((_mem_op(POP, 4, "MEM", True),)), "cog id")
-        elif isinstance(target, ObjCall):
-            self.error(msg.COGNEW_SPIN_OBJECT, target)
-            raise CompileFailure()
-        else:
+        else:  # an address (PASM); an object's method is called and its result used
             if new:
                 self.code.emit(0x34, "next free cog")
             else:

@@ -28,6 +28,8 @@ __all__ = ["CompiledObject", "MethodInfo", "ObjectCompiler"]
 
 @dataclass
 class MethodInfo:
+    """MethodInf: see the module docstring."""
+
     name: str
     index: int
     public: bool
@@ -82,6 +84,9 @@ class ObjectCompiler:
                 return
             self.undefined.add(k)
         pos = node.pos
+        self.errors.append(Diagnostic(message, pos.path, pos.line, pos.col, self.source.line(pos.line)))
+
+    def error_at(self, message: str, pos) -> None:
         self.errors.append(Diagnostic(message, pos.path, pos.line, pos.col, self.source.line(pos.line)))
 
     def const(self, name: str) -> Optional[Const]:
@@ -154,13 +159,20 @@ class ObjectCompiler:
         index = len(methods) + 1
         for decl, child in self.unit.children:
             count = 1 if decl.count is None else self.count_of(decl.count)
+            if not 1 <= count <= 255:
+                self.error(msg.OBJECT_COUNT, decl.count)
+                count = 1
             osym = ObjSymbol(decl.name, index, count, child, decl)
             syms.add(decl.name, osym, decl, report)
             syms.objects.append(osym)
             for _ in range(count):
                 instances.append((osym, child))
             index += count
+        if len(methods) + len(instances) > 255:
+            self.error(msg.TOO_MANY_METHODS, spin.objs[-1] if spin.objs else methods[-1])
         var_syms, var_size = layout_vars(spin.vars, self.count_of)
+        if var_size > 0x8000:
+            self.error(msg.TOO_MUCH_VAR, spin.vars[-1])
         for v in var_syms:
             syms.add(v.name, v, v, report)
         syms.vars, syms.var_size = var_syms, var_size
@@ -176,13 +188,17 @@ class ObjectCompiler:
         infos = []
         code_bytes = bytearray()
         for sym in syms.methods:
+            errors_before = len(self.errors)
             mc = MethodCompiler(self, sym.node)
             buf = mc.compile()
-            try:
-                mspans, end = buf.layout(offset)
-            except ValueError:
-                self.error(msg.JUMP_TOO_FAR, sym.node)
-                mspans, end = [], offset
+            if len(self.errors) > errors_before:
+                mspans, end = [], offset        # no image is made anyway
+            else:
+                try:
+                    mspans, end = buf.layout(offset)
+                except ValueError:
+                    self.error(msg.JUMP_TOO_FAR, sym.node)
+                    mspans, end = [], offset
             infos.append(MethodInfo(sym.name, sym.index, sym.public, offset, end, mc.locals_size,
                                     sym.nparams, sym.node.pos))
             for s in mspans:

@@ -22,7 +22,7 @@ from .. import messages as msg
 from ..bytecode import BY_MNEMONIC, MATH_BY_SYMBOL
 from ..frontend.ast import (
     Abort, AbortTrap, Assign, Builtin, Call, Case, ExprStmt, If, NameRef, Next, ObjCall, Paren,
-    PostOp, PreOp, Quit, Range, RepeatCount, RepeatForever, RepeatFrom, RepeatWhile, Return, Unary,
+    PostOp, PreOp, Quit, Range, RepeatCount, Str, RepeatForever, RepeatFrom, RepeatWhile, Return, Unary,
     VARIABLE_NODES, key,
 )
 from ..frontend.source import Pos
@@ -58,8 +58,15 @@ class MethodCompiler(ExprCompiler):
         self.obj = obj
         self.method = method
         self.code = CodeBuffer()
-        self.frame, self.locals_size = frame_locals(method, obj.count_of)
+        self.frame, self.locals_size = frame_locals(method, obj.count_of, self.check_local)
         self.loops: list[_Loop] = []
+
+    def check_local(self, name, pos, frame) -> bool:
+        """A parameter or local must not reuse a name of the object or of the method."""
+        if key(name) in frame or self.obj.symbols.get(name) is not None or self.obj.const(name) is not None:
+            self.obj.error_at(msg.DUPLICATE_SAME_LINE.format(name=name), pos)
+            return False
+        return True
 
     def error(self, message, node, undefined=None) -> None:
         self.obj.error(message, node, undefined)
@@ -189,6 +196,10 @@ class MethodCompiler(ExprCompiler):
                     self.expr(v.low)
                     self.expr(v.high)
                     code.jump(bytes((_OP["CASE_RANGE"],)), label, "case range")
+                elif isinstance(v, Str) and len(self.obj.char_bytes(v.text)) > 1:
+                    for b in self.obj.char_bytes(v.text):   # "abc": one value per character
+                        self.push_const(b)
+                        code.jump(bytes((_OP["CASE_VALUE"],)), label, "case value")
                 else:
                     self.expr(v)
                     code.jump(bytes((_OP["CASE_VALUE"],)), label, "case value")

@@ -47,6 +47,8 @@ _NODES: list = []
 
 def _node(cls):
     """A dataclass whose ``__init__`` is made later, together with all others (fast import)."""
+    if cls.__doc__ is None:  # spares dataclass() an inspect.signature() call
+        cls.__doc__ = f"{cls.__name__} node."
     cls = dataclass(init=False, repr=False, eq=False)(cls)
     _NODES.append(cls)
     return cls

@@ -4,7 +4,7 @@
 shift/reduce or reduce/reduce conflict is an error) the first time it is
 needed; the resulting tables are pickled into the user's cache directory
 (``$XDG_CACHE_HOME/spinemu`` or ``~/.cache/spinemu``, keyed by the grammar's
-SHA-256), so later runs neither analyse the grammar nor import Lark at all:
+CRC-32, Adler-32 and length), so later runs neither analyse the grammar nor import Lark at all:
 importing Lark alone costs about 75 ms, loading the pickled tables about 3 ms.
 
 :class:`Parser` is a plain LALR driver over those tables.  It shapes results
@@ -14,10 +14,10 @@ rule's children to a builder method named after the rule's alias.
 """
 from __future__ import annotations
 
-import hashlib
 import os
 import pickle
 import tempfile
+import zlib
 from pathlib import Path
 from typing import Callable, Optional
 
@@ -113,7 +113,8 @@ def load_tables(path: Optional[Path] = None, use_cache: bool = True) -> Tables:
     """The tables for ``path`` (default: spin.lark), from the cache when possible."""
     path = path or grammar_path()
     text = path.read_text(encoding="utf-8")
-    key = hashlib.sha256(f"{_FORMAT}\0{text}".encode()).hexdigest()[:20]
+    data = f"{_FORMAT}\0{text}".encode()
+    key = f"{zlib.crc32(data):08x}{zlib.adler32(data):08x}{len(data):x}"
     cache = _cache_dir() / f"spin-{key}.lalr.pickle"
     if use_cache:
         try:

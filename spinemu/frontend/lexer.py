@@ -84,6 +84,8 @@ class Comment:
 
 @dataclass
 class LexedFile:
+    """LexedFil: see the module docstring."""
+
     sections: list
     comments: dict  # line -> [Comment]
     errors: list    # [Diagnostic]

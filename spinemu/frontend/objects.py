@@ -82,7 +82,12 @@ class _Loader:
         self.units[real] = unit
         self.stack.append(real)
         here = os.path.dirname(os.path.abspath(path))
+        seen: dict = {}
         for decl in spin.objs:
+            if key(decl.name) in seen:
+                self._error(msg.DUPLICATE.format(name=decl.name, line=seen[key(decl.name)]), decl, spin)
+                continue
+            seen[key(decl.name)] = decl.pos.line
             child_path = resolve_object_file(decl.filename, here, self.include_dirs)
             if child_path is None:
                 where = ", ".join([here] + self.include_dirs)

@@ -107,7 +107,8 @@ def one(args):
         if mine is not None:
             res["status"] = "accepted-by-spinemu"
             res["detail"] = f"OpenSpin: line {ref_err[0]}: {ref_err[1]}"
-        elif ref_err[0] is not None and (os.path.realpath(ref_err[2]), ref_err[0]) in lines:
+        elif ref_err[0] is not None and (os.path.realpath(os.path.join(os.path.dirname(path), ref_err[2])),
+                                         ref_err[0]) in lines:
             res["status"] = "rejected-same-line"
         elif ref_err[0] is None and "find/open" in ref_err[1] and missing:
             res["status"] = "rejected-same-line"   # a missing or empty file: OpenSpin gives no line
