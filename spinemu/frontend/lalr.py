@@ -160,9 +160,14 @@ class Parser:
     def __init__(self, tables: Tables, builder):
         self.tables = tables
         self.callbacks: list[Optional[Callable]] = []
-        for (_origin, _size, callback, _e1, inline, _recipe, _none) in tables.rules:
+        # unit rules (``?a: b`` reducing one child to itself) only change state: the
+        # expression grammar's precedence chain makes most reductions of this kind
+        self.unit: list[bool] = []
+        for (_origin, size, callback, expand1, inline, recipe, append_none) in tables.rules:
             fn = None if inline else getattr(builder, callback, None)
             self.callbacks.append(fn)
+            self.unit.append(size == 1 and expand1 and not inline and not append_none
+                             and recipe == ((0, False, 0),))
 
     def parse(self, tokens: list, start: str):
         """Parse ``tokens`` from rule ``start``; raise :class:`ParseFailure` on a bad token."""
@@ -170,6 +175,7 @@ class Parser:
         states = tables.states
         rules = tables.rules
         callbacks = self.callbacks
+        unit = self.unit
         state_stack = [tables.start_states[start]]
         end_state = tables.end_states[start]
         value_stack: list = []
@@ -185,6 +191,11 @@ class Parser:
                     value_stack.append(tok)
                     break
                 r = -1 - action
+                if unit[r]:
+                    state_stack[-1] = states[state_stack[-2]][rules[r][0]]
+                    if ttype == "$END" and state_stack[-1] == end_state:
+                        return value_stack[-1]
+                    continue
                 origin, size, _cb, expand1, inline, recipe, append_none = rules[r]
                 if size:
                     children = value_stack[-size:]

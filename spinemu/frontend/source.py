@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass, field
-from typing import Optional
+from typing import NamedTuple, Optional
 
 from ..diagnostics import ParseError
 from .. import messages as msg
@@ -60,9 +60,8 @@ def utf16_char_byte(ch: str) -> int:
     return _U16_TABLES[cls].get(code & 0xFF, 0xFF)
 
 
-@dataclass(frozen=True, slots=True)
-class Pos:
-    """A place in a source file: path, 1-based line and column."""
+class Pos(NamedTuple):
+    """A place in a source file: path, 1-based line and column (a tuple: cheap to make)."""
 
     path: str
     line: int
