@@ -151,11 +151,19 @@ class ExprCompiler:
         if c is not None:
             self.push_const(c.bits, "constant")
             return
-        method = getattr(self, "x_" + type(node).__name__, None)
-        if method is None:
-            self.error(msg.NOT_A_VARIABLE.format(name=type(node).__name__), node)
-            raise CompileFailure()
-        method(node)
+        getattr(self, "x_" + type(node).__name__)(node)
+
+    def x_Here(self, node) -> None:
+        self.error(msg.HERE_OUTSIDE_DAT, node)
+        raise CompileFailure()
+
+    def x_LocalLabel(self, node) -> None:
+        self.error(msg.LOCAL_LABEL_OUTSIDE_DAT.format(name=node.name), node)
+        raise CompileFailure()
+
+    def x_Range(self, node) -> None:
+        self.error(msg.RANGE_NOT_ALLOWED, node)
+        raise CompileFailure()
 
     def x_Paren(self, node) -> None:
         self.expr(node.expr)
