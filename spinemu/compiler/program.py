@@ -2,7 +2,7 @@
 
 >>> prog = compile_source("PUB main\\n  outa[0]~~\\n")
 >>> prog.binary[:4].hex(), len(prog.binary)
-('001bb700', 28)
+('001bb700', 32)
 """
 from __future__ import annotations
 
