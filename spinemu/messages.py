@@ -84,7 +84,7 @@ UNKNOWN_METHOD_IN_OBJECT = "object '{obj}' has no public method '{name}'"
 UNKNOWN_CONSTANT_IN_OBJECT = "object '{obj}' has no constant '{name}'"
 WRONG_ARG_COUNT = "'{name}' takes {expected} parameter{s}, not {got}"
 RESERVED_NAME = "'{name}' is a reserved word"
-NO_PUB = "no PUB method: a program starts with the first PUB method of its top object"
+NO_PUB = "no PUB method: every object needs one (a program starts with the top object's first)"
 NO_METHODS_OR_DAT = "this object has no methods"
 
 # ----------------------------------------------------------------------------- constants

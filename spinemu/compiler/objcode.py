@@ -151,6 +151,9 @@ class ObjectCompiler:
         syms = self.symbols
         report = lambda message, node: self.error(message, node)
         methods = method_order(spin.methods)
+        if not methods or not methods[0].public:
+            line, col = self.source.end_position()
+            self.errors.append(Diagnostic(msg.NO_PUB, self.source.path, line, col, self.source.line(line)))
         for i, m in enumerate(methods):
             sym = MethodSymbol(m.name, i + 1, m.public, m, len(m.params))
             if syms.add(m.name, sym, m, report):

@@ -28,6 +28,7 @@ EXPECTED_WORDS = {
     "bad_clock_mode.spin": "invalid clock setting",
     "bad_number.spin": "unexpected '2'",
     "cascade_once.spin": "unknown symbol 'y'",
+    "object_without_pub.spin": "no PUB method",
     "con_divide_by_zero.spin": "division by zero",
     "con_float_and_integer.spin": "cannot mix integer and floating-point",
     "dat_label_twice.spin": "'l1' is already defined (line 3)",
@@ -81,6 +82,7 @@ def test_rejected_like_openspin_on_the_same_line(name):
     lines = [d.line for d in err.diagnostics]
     if ref["line"] is not None and name not in DEVIATIONS:
         assert ref["line"] in lines, f"OpenSpin: line {ref['line']} ({ref['message']}); spinemu: {err}"
+        assert ref["file"] in {os.path.basename(d.path) for d in err.diagnostics if d.line == ref["line"]}
     assert EXPECTED_WORDS[name] in err.diagnostics[0].message
     for d in err.diagnostics:
         assert not _internal_names(d.message), d.message

@@ -118,9 +118,10 @@ def main(argv=None) -> int:
             rc, text = openspin(args.openspin, src, out)
             if os.path.exists(out):
                 os.remove(out)
-            m = re.search(r"\((\d+):(\d+)\) : error : (.*)", text)
+            m = re.search(r"^(.*?)\((\d+):(\d+)\) : error : (.*)", text, re.M)
             if rc and m:
-                results[fname] = {"line": int(m.group(1)), "col": int(m.group(2)), "message": m.group(3).strip()}
+                results[fname] = {"file": os.path.basename(m.group(1)), "line": int(m.group(2)),
+                                  "col": int(m.group(3)), "message": m.group(4).strip()}
             elif rc:
                 results[fname] = {"line": None, "col": None, "message": text.strip().splitlines()[0]
                                   .split(" : ")[-1] if text.strip() else f"exit status {rc}"}
