@@ -148,7 +148,6 @@ class AstBuilder:
     def case_stmt(self, ch):
         return Case(self.pos(ch[0]), ch[1], [c for c in ch[2:] if isinstance(c, CaseItem)])
 
-
     def case_item(self, ch):
         values = ch[0]
         body = ch[-1]

@@ -195,6 +195,7 @@ _TOKEN_RE = re.compile(r"""
 _SPACED_EQUAL = re.compile(r"[ \t]+=(?![=<>])")
 _NUMBER_KINDS = {"dec": "NUMBER", "hex": "NUMBER", "quat": "NUMBER", "bin": "NUMBER", "float": "FLOAT"}
 _NEWLINE_RE = re.compile(r"\r\n|\r|\n")
+_BRACE_RE = re.compile(r"[{}]")
 
 
 class _Lexer:
@@ -259,20 +260,14 @@ class _Lexer:
                 end = len(text) - 2
             stop, kind, body = end + 2, "{{", text[pos + 2:end]
         else:
-            depth, i = 0, pos
-            n = len(text)
-            while i < n:
-                ch = text[i]
-                if ch == "{":
-                    depth += 1
-                elif ch == "}":
-                    depth -= 1
-                    if depth == 0:
-                        break
-                i += 1
-            if i >= n:
+            depth, i = 0, len(text) - 1
+            for m in _BRACE_RE.finditer(text, pos):
+                depth += 1 if m.group() == "{" else -1
+                if depth == 0:
+                    i = m.start()
+                    break
+            else:
                 self._unterminated(msg.UNTERMINATED_BRACE.format(line=line))
-                i = n - 1
             stop, kind, body = i + 1, "{", text[pos + 1:i]
         # keep line bookkeeping right across the comment's line breaks
         for m in _NEWLINE_RE.finditer(text, pos, stop):
@@ -400,8 +395,6 @@ class _Lexer:
             elif type_ == "LSQB":
                 type_ = "DLSQB"
             self._operand()
-        elif value == '"':  # pragma: no cover - strings are matched before operators
-            pass
         self._emit(type_, value, pos)
         return end
 
