@@ -68,6 +68,15 @@ def describe_instruction(code: bytes, pos: int, base: int = 0, addresses: bool =
     return f"{text:<16}{arg}".rstrip()
 
 
+def _pasm_text(chunk: bytes) -> str:
+    """An instruction long as PASM (spinemu.pasm's disassembler), if that module is there."""
+    try:
+        from ..pasm import disassemble
+    except ImportError:  # pragma: no cover - the PASM table comes from another branch
+        return ""
+    return " ".join(disassemble(int.from_bytes(chunk, "little")).split())
+
+
 def _hex_rows(data: bytes):
     for i in range(0, len(data), _BYTES_PER_ROW):
         yield i, " ".join(f"{b:02X}" for b in data[i:i + _BYTES_PER_ROW])
@@ -101,7 +110,9 @@ def format_listing(prog, addresses: bool = True) -> str:
             if span.pos is not None and span.pos.line != last_line:
                 last_line = span.pos.line
                 out.append(f";{last_line:5d}| {(source.line(last_line) or '').rstrip()}")
-            emit(span.offset, data[span.offset:span.offset + len(span.data)], span.note)
+            chunk = data[span.offset:span.offset + len(span.data)]
+            emit(span.offset, chunk, _pasm_text(chunk) if span.note and len(chunk) == 4
+                 and span.note not in ("object table",) else span.note)
         for m in cobj.methods:
             node = m.pos
             head = (source.line(node.line) or "").strip()[3:].split("'")[0].strip() or m.name
