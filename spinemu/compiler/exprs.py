@@ -19,9 +19,8 @@ from __future__ import annotations
 from ..bytecode import BY_MNEMONIC, MATH_BY_SYMBOL, REGISTER_NAMES, encode_unsigned, mask_code
 from .. import messages as msg
 from ..frontend.ast import (
-    AbortTrap, AddrOf, Assign, Binary, Builtin, Call, Float, KConst, Lookup, MemberRef, MemRef,
-    NameRef, Number, ObjAddr, ObjCall, ObjConst, Paren, PostOp, PreOp, Range, RegRef, ResultRef,
-    SprRef, Str, Unary, key,
+    Assign, Builtin, Call, Float, KConst, MemberRef, MemRef, NameRef, Number, ObjCall, ObjConst, Paren,
+    Range, RegRef, ResultRef, SprRef, Str, Unary, key,
 )
 from ..frontend.constants import Const, ConstError, NotConstant, evaluate
 from .code import Label

@@ -21,9 +21,8 @@ from __future__ import annotations
 from .. import messages as msg
 from ..bytecode import BY_MNEMONIC, MATH_BY_SYMBOL
 from ..frontend.ast import (
-    Abort, AbortTrap, Assign, Builtin, Call, Case, ExprStmt, If, NameRef, Next, ObjCall, Paren,
-    PostOp, PreOp, Quit, Range, RepeatCount, Str, RepeatForever, RepeatFrom, RepeatWhile, Return, Unary,
-    VARIABLE_NODES, key,
+    VARIABLE_NODES, AbortTrap, Assign, Builtin, Call, Case, If, NameRef, ObjCall, PostOp, PreOp, Range,
+    RepeatFrom, Str, Unary, key,
 )
 from ..frontend.source import Pos
 from .code import CodeBuffer, Label

@@ -18,7 +18,7 @@ from typing import Optional
 
 from ..diagnostics import CompileError, Diagnostic, ParseError
 from .. import messages as msg
-from .ast import ConDef, ConEnumName, ConEnumStart, NameRef, ObjConst, SpinFile, key
+from .ast import ConEnumName, ConEnumStart, NameRef, ObjConst, SpinFile, key
 from .constants import Const, ConstError, NotConstant, evaluate
 from .parser import parse_text
 from .source import read_source

@@ -6,7 +6,6 @@ line or method, so one run reports several errors without cascades.
 """
 from __future__ import annotations
 
-from typing import Optional
 
 from ..diagnostics import Diagnostic, ParseError
 from .. import messages as msg
