@@ -74,12 +74,33 @@ def describe_expected(expected) -> str:
     return ", ".join(words[:-1]) + " or " + words[-1]
 
 
-def _failure(exc: ParseFailure, source: SourceText, start: str) -> Diagnostic:
+def _open_brackets(tokens: list, tok) -> set:
+    """Which of ')' and ']' could close something open on ``tok``'s line before it."""
+    stack = []
+    for t in tokens:
+        if t is tok:
+            break
+        if t.line != tok.line:
+            stack.clear()
+            continue
+        if t.type == "LPAR":
+            stack.append("RPAR")
+        elif t.type in ("LSQB", "DLSQB"):
+            stack.append("RSQB")
+        elif t.type in ("RPAR", "RSQB") and stack:
+            stack.pop()
+    return set(stack)
+
+
+def _failure(exc: ParseFailure, source: SourceText, start: str, tokens: list) -> Diagnostic:
     tok = exc.token
     if tok.type == "EQUAL" and start == "method":
         text = msg.SINGLE_EQUAL
     else:
-        exp = describe_expected(exc.expected)
+        expected = set(exc.expected)
+        # LALR merges look-aheads: do not offer a ')' or ']' that closes nothing
+        expected -= {"RPAR", "RSQB"} - _open_brackets(tokens, tok)
+        exp = describe_expected(expected or exc.expected)
         tail = msg.EXPECTED_TAIL.format(what=exp) if exp else ""
         text = msg.UNEXPECTED.format(found=describe_token(tok), expected=tail)
     length = max(1, len(tok.value)) if isinstance(tok, Token) else 1
@@ -109,7 +130,7 @@ def parse_text(source: SourceText) -> tuple[SpinFile, list]:
         try:
             return parser.parse(tokens, start)
         except ParseFailure as exc:
-            errors.append(_failure(exc, source, start))
+            errors.append(_failure(exc, source, start, tokens))
             return None
 
     for section in lexed.sections:
