@@ -31,8 +31,8 @@ from typing import Callable, Optional
 from ..diagnostics import EmulationError, ImageError
 from ..image import BOOT_FRAME, HUB_SIZE, ImageHeader, load_image
 from ..trace import PinTrace
-from .cog import PIN_WAIT, RUNNING, STOPPED, IDLE_PASM, Cog
-from .control import CogStopped, RebootRequested, Reschedule
+from .cog import PARKED, PIN_WAIT, RUNNING, STOPPED, IDLE_PASM, Cog
+from .control import CogStopped, Preempted, RebootRequested, Reschedule
 from .fastforward import LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
 from .registers import Registers
 from .rom import INTERPRETER_ENTRY, build_rom
@@ -48,6 +48,10 @@ COG_LOAD_CYCLES = 496 * 16 + 16
 _SPINSIM_START_CYCLES = -4          # spinsim: first instruction in the COGINIT's last cycle
 _NEVER = 1 << 62
 _WRAP = 1 << 32
+
+
+def _preempt_handler(c, op, t):
+    raise Preempted
 
 
 @dataclass
@@ -128,7 +132,12 @@ class Chip:
         from .counters import Counters
         self.counters = Counters(self)
         self.registers = Registers(self)
+        #: one flag per hub long: set while a parked busy loop (fastforward.py) reads it
+        self.watch = bytearray(0x10000 >> 2)
+        self._parked: list = []
         self.handlers = build_handlers(self, self.timing)
+        self._handlers = list(self.handlers)      # the real ones, while a preemption is pending
+        self._preempt = False
         self.pin_events: list = []          # (cycle, seq, cog, dira, outa, running)
         self.cog_events: list = []
         self.warnings: list = []
@@ -203,6 +212,8 @@ class Chip:
     def stop_cog(self, c: Cog, t: int, why: str) -> None:
         if c.state == STOPPED:
             return
+        if c.state == PARKED:
+            self._unpark(c, t)
         if c in self._pin_waiters:
             self._pin_waiters.remove(c)
         c.state = STOPPED
@@ -362,49 +373,64 @@ class Chip:
         self.cog_events[-1] = (t_first, 0, "start", f"Spin method at ${cog0.pc:04X} (boot)")
 
     def _schedule(self, limit: int, progress) -> str:
+        """Advance the cog furthest behind until every cog stopped or ``limit``. (Hot loop.)"""
         cogs = self.cogs
+        inputs = self.inputs
         next_report = 0
+        run = (self._run_spin_traced if self.recorder is not None
+               else self._run_with_fast_forward if self.fast_forward else self._run_spin)
         while True:
-            running = [c for c in cogs if c.state == RUNNING]
-            if not running:
+            # the running cog that starts its next bytecode first (lowest id on ties)
+            c = None
+            for k in cogs:
+                if k.state == RUNNING and (c is None or k.t < c.t):
+                    c = k
+            if c is None:
+                if self._parked and not self._pin_waiters:
+                    if limit >= _NEVER:
+                        return "stalled"
+                    for p in list(self._parked):
+                        self._unpark(p, limit)
+                    continue
                 if self._pin_waiters:
-                    wake = self.inputs.next_change(self.now)
+                    wake = inputs.next_change(self.now)
                     if wake is None or wake >= limit:
-                        self.now = limit if limit < _NEVER else self.now
-                        return "cycle limit" if limit < _NEVER else "deadlock"
+                        if limit < _NEVER:
+                            self.now = limit
+                            return "cycle limit"
+                        return "deadlock"
                     self.now = wake
                     self._wake_pin_waiters(wake)
                     continue
-                return "all cogs stopped" if not any(c.state == IDLE_PASM for c in cogs) else (
-                    "cycle limit" if limit < _NEVER else "deadlock")
-            c = min(running, key=lambda k: (k.t, k.id))
-            if c.t >= limit:
+                if any(k.state == IDLE_PASM for k in cogs):
+                    return "cycle limit" if limit < _NEVER else "deadlock"
+                return "all cogs stopped"
+            t = c.t
+            if t >= limit:
                 self.now = limit
+                for p in list(self._parked):
+                    self._unpark(p, limit)
                 return "cycle limit"
             until = limit
-            for o in running:
-                if o is not c:
-                    bound = o.t + (1 if c.id < o.id else 0)
+            cid = c.id
+            for o in cogs:
+                if o.state == RUNNING and o is not c:
+                    bound = o.t + 1 if cid < o.id else o.t
                     if bound < until:
                         until = bound
             if self._pin_waiters:
-                nxt = self.inputs.next_change(c.t)
+                nxt = inputs.next_change(t)
                 if nxt is not None and nxt < until:
-                    until = max(nxt, c.t + 1)
-            self.now = c.t
+                    until = max(nxt, t + 1)
+            self.now = t
             try:
-                if self.recorder is not None:
-                    self._run_spin_traced(c, until)
-                elif not self.fast_forward:
-                    self._run_spin(c, until)
-                else:
-                    self._run_with_fast_forward(c, until)
+                run(c, until)
             except RebootRequested:
                 self.now = c.t
                 return "reboot"
-            if progress is not None and self.now >= next_report:
-                progress(self.now)
-                next_report = self.now + 10_000_000
+            if progress is not None and t >= next_report:
+                progress(t)
+                next_report = t + 10_000_000
 
     def _run_with_fast_forward(self, c: Cog, until: int) -> None:
         """Run ``c`` until ``until``, skipping iterations of a learned busy loop (see fastforward.py)."""
@@ -426,13 +452,56 @@ class Chip:
                 c.learn_mark = c.bytecodes
                 self._run_spin(c, until)
                 return
-            k = (until - c.t) // busy.period
-            if k > 0:
-                c.t += k * busy.period
-                c.bytecodes += k * busy.bytecodes
-                busy.skipped += k * busy.bytecodes
-                self._ff_skipped += k * busy.bytecodes
+            self._park(c)
+            return
         self._run_spin_to(c, until, busy.head)
+
+    # ------------------------------------------------------------------ parking busy loops
+    def _park(self, c: Cog) -> None:
+        """Take cog ``c`` out of the schedule: it repeats its learned loop until something it reads changes."""
+        c.state = PARKED
+        c.park_t0 = c.t
+        for shift, i, _ in c.busy.reads:
+            a = (i << shift) & 0xFFFF
+            self.watch[a >> 2] = 1
+        self._parked.append(c)
+
+    def _unpark(self, c: Cog, t_limit: int) -> None:
+        """Bring parked cog ``c`` to where it would be, running its loop, when bytecodes starting before ``t_limit`` are done."""
+        busy = c.busy
+        k = max(0, (t_limit - 1 - c.park_t0) // busy.period)
+        c.t = c.park_t0 + k * busy.period
+        c.bytecodes += k * busy.bytecodes
+        busy.skipped += k * busy.bytecodes
+        self._ff_skipped += k * busy.bytecodes
+        c.state = RUNNING
+        self._parked.remove(c)
+        self.watch[:] = bytes(len(self.watch))
+        for p in self._parked:
+            for shift, i, _ in p.busy.reads:
+                self.watch[((i << shift) & 0xFFFF) >> 2] = 1
+        if c.t < t_limit:
+            self._run_spin(c, t_limit)
+
+    def watch_hit(self, writer: Cog, hub_addr: int, t: int) -> None:
+        """``writer``'s bytecode started at ``t`` is about to write a hub long a parked loop reads.
+
+        The parked cog is brought up to ``t`` first (it reads the old value, as
+        it would have), and the writer's run loop is preempted after this
+        bytecode, so that the scheduler interleaves the two cogs again.
+        """
+        woke = False
+        for p in list(self._parked):
+            if any(((i << shift) & 0xFFFF) >> 2 == hub_addr >> 2 for shift, i, _ in p.busy.reads):
+                self._unpark(p, t + 1 if p.id < writer.id else t)
+                woke = True
+        if woke:
+            self._preempt = True
+            self.handlers[:] = [_preempt_handler] * 256
+
+    def _end_preemption(self) -> None:
+        self.handlers[:] = self._handlers
+        self._preempt = False
 
     def _learn(self, c: Cog, until: int) -> None:
         if self._tracking is None:
@@ -464,13 +533,16 @@ class Chip:
                 c.pc = pc + 1
                 tf = t + 12
                 tf += (P - tf) & 15
-                t = tf + H[op](c, op, tf)
+                t = tf + H[op](c, op, t)
                 n += 1
                 if c.pc == stop_pc:
                     break
         except Reschedule as e:
             t = tf + e.rest
             n += 1
+        except Preempted:
+            c.pc = pc
+            self._end_preemption()
         except CogStopped:
             c.bytecodes += n + 1
             return
@@ -499,11 +571,14 @@ class Chip:
                 c.pc = pc + 1
                 tf = t + 12
                 tf += (P - tf) & 15
-                t = tf + H[op](c, op, tf)
+                t = tf + H[op](c, op, t)
                 n += 1
         except Reschedule as e:
             t = tf + e.rest
             n += 1
+        except Preempted:
+            c.pc = pc
+            self._end_preemption()
         except CogStopped:
             c.bytecodes += n + 1
             return

@@ -147,7 +147,7 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
     P = c.hub_phase
     from .control import Reschedule  # local: keep module import light
     for _ in range(LEARN_BUDGET):
-        if c.t >= limit or c.state != "running":
+        if c.t >= limit or c.state != "running" or chip._preempt:
             return None
         op = mem[c.pc]
         if _impure(chip, c, op):
@@ -170,7 +170,7 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
         tf = t + 12
         tf += (P - tf) & 15
         try:
-            c.t = tf + handlers[op](c, op, tf)
+            c.t = tf + handlers[op](c, op, t)
         except Reschedule as e:      # not expected for pure ops; be safe
             c.t = tf + e.rest
             return None
