@@ -69,6 +69,8 @@ def log_facts(spinsim: str, image_path: str, tmp: str):
             state = [t, dira, dira & outa]
             if not trace or trace[-1][1:] != state[1:]:
                 trace.append(state)
+        if end and trace and trace[-1][1:] != [0, 0]:
+            trace.append([end, 0, 0])           # the cog stopped: its pins float
     return end, trace
 
 
