@@ -143,6 +143,7 @@ class Chip:
         self.warnings: list = []
         self._seq = 0
         self._started = False
+        self._booted = False
         #: when a list, every bytecode is appended to it as
         #: ``(cog, pc, op, t_start, t_fetched, t_next, stack_before, stack_after)``
         #: (the instrumented loop; used by the timing derivation and debugging)
@@ -343,7 +344,8 @@ class Chip:
         self._started = True
         wall = time.perf_counter()
         limit = _NEVER if max_cycles is None else max_cycles
-        self._boot()
+        if not self._booted:
+            self._boot()
         reason = self._schedule(limit, progress)
         end = self.now if reason != "cycle limit" else limit
         wall = time.perf_counter() - wall
@@ -360,7 +362,23 @@ class Chip:
         return {"fast_forward": self.fast_forward, "busy_loops_learned": self._ff_loops,
                 "bytecodes_skipped": self._ff_skipped}
 
+    def step(self, cog: int = 0) -> int:
+        """Execute exactly one bytecode of cog ``cog`` (booting the chip first if needed).
+
+        For tests and debuggers: no other cog runs, no fast-forward.
+
+        Returns:
+            the cycles from the start of that bytecode to the start of the next.
+        """
+        if not self._booted:
+            self._boot()
+        c = self.cogs[cog]
+        t = c.t
+        self._run_spin(c, t + 1)
+        return c.t - t
+
     def _boot(self) -> None:
+        self._booted = True
         self._pin_waiters = []
         self._video_ready = [0] * 8
         cog0 = self.cogs[0]
