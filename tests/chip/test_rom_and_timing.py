@@ -57,4 +57,4 @@ def test_dispatch_list_covers_all_256_bytecodes_from_the_table():
 
 def test_a_path_of_plain_and_hub_instructions_rounds_hub_waits_to_the_window():
     # ADD: 14 plain, pop, 1 plain, pop, 21 plain, push, 3 plain (measured on spinsim)
-    assert segments_rest([14, "H", 1, "H", 21, "H", 3]) == 188 == load_timing().math(0x0C, 1, 2)
+    assert segments_rest([14, "H", 1, "H", 21, "H", 3], phase=8, t=8) == 188 == load_timing().math(0x0C, 1, 2)
