@@ -131,6 +131,7 @@ class Chip:
         self.clock_hz = self.header.clkfreq
         from .counters import Counters
         self.counters = Counters(self)
+        self.counters_on = False        # some counter is in an output mode (else pins skip them)
         self.registers = Registers(self)
         #: one flag per hub long: set while a parked busy loop (fastforward.py) reads it
         self.watch = bytearray(0x10000 >> 2)
@@ -154,24 +155,35 @@ class Chip:
         self.now = 0
 
     # ------------------------------------------------------------------ pins
-    def pin_state(self) -> tuple[int, int]:
-        """``(dir, out)`` over running cogs right now."""
+    def pin_state(self, t: int) -> tuple[int, int]:
+        """``(dir, out)`` over running cogs at cycle ``t`` (counter outputs included)."""
         d = o = 0
+        counters = self.counters if self.counters_on else None
         for c in self.cogs:
             if c.state != STOPPED:
                 d |= c.dira
-                o |= c.dira & c.outa
+                out = c.outa
+                if counters is not None:
+                    out |= counters.outputs(c, t)
+                o |= c.dira & out
         return d, o
 
     def ina(self, t: int) -> int:
         """What INA reads at cycle ``t``: driven pins as driven, the rest from the input model."""
-        d, o = self.pin_state()
+        d, o = self.pin_state(t)
         return o | (self.inputs.levels(t) & ~d & 0xFFFFFFFF)
 
-    def note_pins(self, c: Cog, t: int) -> None:
-        """Cog ``c`` changed DIRA or OUTA at cycle ``t`` (the pins change then)."""
+    def record_cog_pins(self, c: Cog, t: int) -> None:
+        """Add cog ``c``'s pin drive at cycle ``t`` to the pin record."""
+        out = c.outa
+        if self.counters_on:
+            out |= self.counters.outputs(c, t)
         self._seq += 1
-        self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, c.state != STOPPED))
+        self.pin_events.append((t, self._seq, c.id, c.dira, out, c.state != STOPPED))
+
+    def note_pins(self, c: Cog, t: int) -> None:
+        """Cog ``c`` changed DIRA, OUTA or a counter at cycle ``t`` (the pins change then)."""
+        self.record_cog_pins(c, t)
         if self._pin_waiters:
             self._wake_pin_waiters(t)
 
@@ -217,6 +229,8 @@ class Chip:
             self._unpark(c, t)
         if c in self._pin_waiters:
             self._pin_waiters.remove(c)
+        if self.counters_on:
+            self.counters.flush(c, t)
         c.state = STOPPED
         c.pin_wait = None
         c.t = _NEVER
@@ -311,6 +325,7 @@ class Chip:
         c.pin_wait = (mask, state, equal, after)
         c.state = PIN_WAIT
         self._pin_waiters.append(c)
+        self._ext_seen = max(self._ext_seen, t)
         raise Reschedule(_NEVER - tf)
 
     def _wake_pin_waiters(self, t: int) -> None:
@@ -348,6 +363,10 @@ class Chip:
             self._boot()
         reason = self._schedule(limit, progress)
         end = self.now if reason != "cycle limit" else limit
+        if self.counters_on:
+            for c in self.cogs:
+                if c.state != STOPPED:
+                    self.counters.flush(c, end)
         wall = time.perf_counter() - wall
         trace = self._build_trace(end)
         per_cog = {c.id: c.bytecodes for c in self.cogs if c.bytecodes}
@@ -379,6 +398,7 @@ class Chip:
 
     def _boot(self) -> None:
         self._booted = True
+        self._ext_seen = 0
         self._pin_waiters = []
         self._video_ready = [0] * 8
         cog0 = self.cogs[0]
@@ -403,6 +423,11 @@ class Chip:
             for k in cogs:
                 if k.state == RUNNING and (c is None or k.t < c.t):
                     c = k
+            ext = self._next_external(limit) if self._pin_waiters else None
+            if ext is not None and (c is None or ext <= c.t):
+                self.now = self._ext_seen = ext         # an input edge or a counter edge
+                self._wake_pin_waiters(ext)
+                continue
             if c is None:
                 if self._parked and not self._pin_waiters:
                     if limit >= _NEVER:
@@ -410,16 +435,11 @@ class Chip:
                     for p in list(self._parked):
                         self._unpark(p, limit)
                     continue
-                if self._pin_waiters:
-                    wake = inputs.next_change(self.now)
-                    if wake is None or wake >= limit:
-                        if limit < _NEVER:
-                            self.now = limit
-                            return "cycle limit"
-                        return "deadlock"
-                    self.now = wake
-                    self._wake_pin_waiters(wake)
-                    continue
+                if self._pin_waiters:           # nothing can change the pins they wait on
+                    if limit < _NEVER:
+                        self.now = limit
+                        return "cycle limit"
+                    return "deadlock"
                 if any(k.state == IDLE_PASM for k in cogs):
                     return "cycle limit" if limit < _NEVER else "deadlock"
                 return "all cogs stopped"
@@ -436,10 +456,8 @@ class Chip:
                     bound = o.t + 1 if cid < o.id else o.t
                     if bound < until:
                         until = bound
-            if self._pin_waiters:
-                nxt = inputs.next_change(t)
-                if nxt is not None and nxt < until:
-                    until = max(nxt, t + 1)
+            if ext is not None and ext < until:
+                until = ext
             self.now = t
             try:
                 run(c, until)
@@ -449,6 +467,16 @@ class Chip:
             if progress is not None and t >= next_report:
                 progress(t)
                 next_report = t + 10_000_000
+
+    def _next_external(self, limit: int):
+        """The next input change or counter edge after the last one handled, if before ``limit``."""
+        t = self._ext_seen
+        nxt = self.inputs.next_change(t)
+        if self.counters_on:
+            ce = self.counters.next_edge(t)
+            if ce is not None and (nxt is None or ce < nxt):
+                nxt = ce
+        return nxt if nxt is not None and nxt < limit else None
 
     def _run_with_fast_forward(self, c: Cog, until: int) -> None:
         """Run ``c`` until ``until``, skipping iterations of a learned busy loop (see fastforward.py)."""
