@@ -37,7 +37,7 @@ from .fastforward import LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_h
 from .registers import Registers
 from .rom import INTERPRETER_ENTRY, build_rom
 from .spin import build_handlers
-from .timing import Timing, load_timing
+from .timing import Timing, access_offsets, load_timing
 
 __all__ = ["Chip", "RunResult", "COG_LOAD_CYCLES", "COMPAT_MODES"]
 
@@ -137,6 +137,7 @@ class Chip:
         self.watch = bytearray(0x10000 >> 2)
         self._parked: list = []
         self.handlers = build_handlers(self, self.timing)
+        self.access_at = access_offsets()
         self._handlers = list(self.handlers)      # the real ones, while a preemption is pending
         self._preempt = False
         self.pin_events: list = []          # (cycle, seq, cog, dira, outa, running)
@@ -393,7 +394,7 @@ class Chip:
             self._boot()
         c = self.cogs[cog]
         t = c.t
-        self._run_spin(c, t + 1)
+        self._run_spin(c, self._key(c) + 1)
         return c.t - t
 
     def _boot(self) -> None:
@@ -418,11 +419,14 @@ class Chip:
         run = (self._run_spin_traced if self.recorder is not None
                else self._run_with_fast_forward if self.fast_forward else self._run_spin)
         while True:
-            # the running cog that starts its next bytecode first (lowest id on ties)
+            # the running cog whose next bytecode reaches the hub first (lowest id on ties)
             c = None
+            ck = 0
             for k in cogs:
-                if k.state == RUNNING and (c is None or k.t < c.t):
-                    c = k
+                if k.state == RUNNING:
+                    key = self._key(k)
+                    if c is None or key < ck:
+                        c, ck = k, key
             ext = self._next_external(limit) if self._pin_waiters else None
             if ext is not None and (c is None or ext <= c.t):
                 self.now = self._ext_seen = ext         # an input edge or a counter edge
@@ -444,7 +448,7 @@ class Chip:
                     return "cycle limit" if limit < _NEVER else "deadlock"
                 return "all cogs stopped"
             t = c.t
-            if t >= limit:
+            if ck >= limit:
                 self.now = limit
                 for p in list(self._parked):
                     self._unpark(p, limit)
@@ -453,7 +457,8 @@ class Chip:
             cid = c.id
             for o in cogs:
                 if o.state == RUNNING and o is not c:
-                    bound = o.t + 1 if cid < o.id else o.t
+                    key = self._key(o)
+                    bound = key + 1 if cid < o.id else key
                     if bound < until:
                         until = bound
             if ext is not None and ext < until:
@@ -467,6 +472,11 @@ class Chip:
             if progress is not None and t >= next_report:
                 progress(t)
                 next_report = t + 10_000_000
+
+    def _key(self, c: Cog) -> int:
+        """When cog ``c``'s next bytecode touches shared state (see timing.access_offsets)."""
+        tf = c.t + 12
+        return tf + ((c.hub_phase - tf) & 15) + self.access_at[self.mem[c.pc]]
 
     def _next_external(self, limit: int):
         """The next input change or counter edge after the last one handled, if before ``limit``."""
@@ -529,17 +539,19 @@ class Chip:
         if c.t < t_limit:
             self._run_spin(c, t_limit)
 
-    def watch_hit(self, writer: Cog, hub_addr: int, t: int) -> None:
-        """``writer``'s bytecode started at ``t`` is about to write a hub long a parked loop reads.
+    def watch_hit(self, writer: Cog, hub_addr: int, t: int, op: int) -> None:
+        """``writer``'s bytecode ``op``, started at ``t``, is about to write a hub long a parked loop reads.
 
         The parked cog is brought up to ``t`` first (it reads the old value, as
         it would have), and the writer's run loop is preempted after this
         bytecode, so that the scheduler interleaves the two cogs again.
         """
         woke = False
+        tf = t + 12
+        key = tf + ((writer.hub_phase - tf) & 15) + self.access_at[op]
         for p in list(self._parked):
             if any(((i << shift) & 0xFFFF) >> 2 == hub_addr >> 2 for shift, i, _ in p.busy.reads):
-                self._unpark(p, t + 1 if p.id < writer.id else t)
+                self._unpark(p, key + 1 if p.id < writer.id else key)
                 woke = True
         if woke:
             self._preempt = True
@@ -568,17 +580,20 @@ class Chip:
         """:meth:`_run_spin`, but stop when the cog comes back to ``stop_pc`` (a loop head)."""
         mem = self.mem
         H = self.handlers
+        ACC = self.access_at
         P = c.hub_phase
         t = c.t
         n = 0
         tf = t
         try:
-            while t < limit:
+            while True:
                 pc = c.pc
                 op = mem[pc]
-                c.pc = pc + 1
                 tf = t + 12
                 tf += (P - tf) & 15
+                if tf + ACC[op] >= limit:
+                    break
+                c.pc = pc + 1
                 t = tf + H[op](c, op, t)
                 n += 1
                 if c.pc == stop_pc:
@@ -606,17 +621,20 @@ class Chip:
         """Run cog ``c``'s bytecodes while it starts them before ``limit``. (Hot loop.)"""
         mem = self.mem
         H = self.handlers
+        ACC = self.access_at
         P = c.hub_phase
         t = c.t
         n = 0
         tf = t
         try:
-            while t < limit:
+            while True:
                 pc = c.pc
                 op = mem[pc]
-                c.pc = pc + 1
                 tf = t + 12
                 tf += (P - tf) & 15
+                if tf + ACC[op] >= limit:       # another cog touches the hub first
+                    break
+                c.pc = pc + 1
                 t = tf + H[op](c, op, t)
                 n += 1
         except Reschedule as e:
@@ -639,9 +657,9 @@ class Chip:
             c.t = t
 
     def _run_spin_traced(self, c: Cog, limit: int) -> None:
-        """The instrumented twin of :meth:`_run_spin`: one bytecode at a time, recorded."""
+        """The instrumented twin of :meth:`_run_spin`: runs one bytecode and records it."""
         L, W = self.mem_longs, self.mem_words
-        while c.state == RUNNING and c.t < limit:
+        if c.state == RUNNING and self._key(c) < limit:
             pc, t, sp = c.pc, c.t, c.sp
             before = tuple(L[((sp - 4 * k) & 0xFFFF) >> 2] for k in range(1, 5))
             op = self.mem[pc]
@@ -660,7 +678,7 @@ class Chip:
                         break
                 before = before + (n,)
             self.last_target = None
-            self._run_spin(c, t + 1)
+            self._run_spin(c, self._key(c) + 1)
             sp = c.sp
             after = tuple(L[((sp - 4 * k) & 0xFFFF) >> 2] for k in range(1, 3))
             t_next = c.t if c.state == RUNNING else self.now

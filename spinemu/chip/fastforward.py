@@ -146,10 +146,15 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
     marks = []                      # per bytecode: (t, log position, stack pointer)
     P = c.hub_phase
     from .control import Reschedule  # local: keep module import light
+    acc = chip.access_at
     for _ in range(LEARN_BUDGET):
-        if c.t >= limit or c.state != "running" or chip._preempt:
+        if c.state != "running" or chip._preempt:
             return None
         op = mem[c.pc]
+        tf = c.t + 12
+        tf += (P - tf) & 15
+        if tf + acc[op] >= limit:
+            return None
         if _impure(chip, c, op):
             return None
         key = (c.pc, c.t & 15, cog_state(c))
@@ -167,8 +172,6 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
         marks.append((c.t, len(log), c.sp))
         t = c.t
         c.pc = (c.pc + 1) & 0xFFFF
-        tf = t + 12
-        tf += (P - tf) & 15
         try:
             c.t = tf + handlers[op](c, op, t)
         except Reschedule as e:      # not expected for pure ops; be safe

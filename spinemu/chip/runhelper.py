@@ -46,14 +46,14 @@ def run_spin_method(chip, c, t: int) -> int:
         a &= 0xFFFF
         if a < 0x8000:
             if watch[a >> 2]:
-                chip.watch_hit(c, a, t)
+                chip.watch_hit(c, a, t, 0x15)
             L[a >> 2] = v & _M
 
     def ww(a, v):
         a &= 0xFFFF
         if a < 0x8000:
             if watch[a >> 2]:
-                chip.watch_hit(c, a, t)
+                chip.watch_hit(c, a, t, 0x15)
             W[a >> 1] = v & 0xFFFF
 
     # the arguments move to the new stack (as BYTEMOVE would copy them)
@@ -62,7 +62,7 @@ def run_spin_method(chip, c, t: int) -> int:
         a = (stack16 + 12 + i) & 0xFFFF
         if a < 0x8000:
             if watch[a >> 2]:
-                chip.watch_hit(c, a, t)
+                chip.watch_hit(c, a, t, 0x15)
             chip.mem[a] = b
     # the routine's working values left above the operands (slots n, n+1, n+2)
     for slot, value in ((params, nbytes), (params + 1, d), (params + 2, nbytes)):

@@ -27,7 +27,7 @@ from ..bytecode import TABLE
 from .control import CogStopped, RebootRequested, Reschedule
 from .mathops import BINARY, MASK32, UNARY
 from .rom import INTERPRETER_ENTRY, RETURN_TO_STOP
-from .timing import Timing
+from .timing import Timing, math_param
 
 __all__ = ["build_handlers", "random_forward", "random_reverse"]
 
@@ -88,11 +88,11 @@ def build_handlers(chip, timing: Timing):
                   lambda a: W[a >> 1],
                   lambda a: L[a >> 2])
 
-    def sized_write(size, a, v, c, t):
+    def sized_write(size, a, v, c, t, op):
         a &= 0xFFFF
         if a < 0x8000:
             if WATCH[a >> 2]:
-                chip.watch_hit(c, a, t)
+                chip.watch_hit(c, a, t, op)
             if size == 0:
                 mem[a] = v & 0xFF
             elif size == 1:
@@ -450,7 +450,7 @@ def build_handlers(chip, timing: Timing):
         a = pop(c)
         step = 1 << size
         for i in range(count if count < 0x10000 else 0x10000):
-            sized_write(size, a + i * step, value, c, t)
+            sized_write(size, a + i * step, value, c, t, op)
         return T.fill(size, count)
 
     def op_move(c, op, t):
@@ -464,7 +464,7 @@ def build_handlers(chip, timing: Timing):
         n = count if count < 0x10000 else 0x10000
         idx = range(n) if ((dst & 0xFFFF) & align) <= ((src & 0xFFFF) & align) else range(n - 1, -1, -1)
         for i in idx:
-            sized_write(size, dst + i * step, read(((src + i * step) & 0xFFFF) & align), c, t)
+            sized_write(size, dst + i * step, read(((src + i * step) & 0xFFFF) & align), c, t, op)
         return T.move(size, count)
 
     def op_waitpeq(c, op, t):
@@ -478,7 +478,7 @@ def build_handlers(chip, timing: Timing):
         freq = pop(c)
         mode = pop(c) & 0xFF
         if WATCH[0] or WATCH[1]:
-            chip.watch_hit(c, 0, t)
+            chip.watch_hit(c, 0, t, op)
         L[0] = freq
         mem[4] = mode
         rest = T.clkset
@@ -663,7 +663,7 @@ def build_handlers(chip, timing: Timing):
             c.sp = sp
             if a < 0x8000:
                 if WATCH[a >> 2]:
-                    chip.watch_hit(c, a, t)
+                    chip.watch_hit(c, a, t, op)
                 L[a >> 2] = L[sp >> 2]
         elif access == 3:
             sp = c.sp
@@ -676,61 +676,133 @@ def build_handlers(chip, timing: Timing):
             new, rest = _assign(c, aop, L[a >> 2], MASK32, False)
             if a < 0x8000:
                 if WATCH[a >> 2]:
-                    chip.watch_hit(c, a, t)
+                    chip.watch_hit(c, a, t, op)
                 L[a >> 2] = new & MASK32
             return T.var_using[op & 0x20 != 0] + rest
         return T.var[op]
 
     # ------------------------------------------------------------------ $80-$DF memory
-    def op_mem(c, op, t):
+    def make_mem(op):
+        """A handler for memory bytecode ``op`` with its fields resolved (hot path)."""
         size = (op >> 5) & 3
         base = (op >> 2) & 3
+        indexed = bool(op & 0x10)
         access = op & 3
-        long_off = False
-        if base:
-            off, long_off = offset_operand(c)
-            a = off + (c.pbase, c.vbase, c.dbase)[base - 1]
-            if op & 0x10:
-                a += pop(c) << size
+        align = (0xFFFF, 0xFFFE, 0xFFFC)[size]
+        if access == 2:
+            r_short, r_long = T.mem_using[(op, False)], T.mem_using.get((op, True), 0)
         else:
-            if op & 0x10:
-                i = pop(c)
-                a = pop(c) + (i << size)
+            r_short, r_long = T.mem[(op, False)], T.mem.get((op, True), 0)
+
+        def address(c):
+            """Pop index/address operands and decode the offset; returns (address, rest)."""
+            rest = r_short
+            if base:
+                pc = c.pc
+                b = mem[pc]
+                if b & 0x80:
+                    a = ((b & 0x7F) << 8) | mem[pc + 1]
+                    c.pc = pc + 2
+                    rest = r_long
+                else:
+                    a = b
+                    c.pc = pc + 1
+                a += c.vbase if base == 2 else c.dbase if base == 3 else c.pbase
+                if indexed:
+                    sp = c.sp - 4
+                    c.sp = sp
+                    a += L[sp >> 2] << size
             else:
-                a = pop(c)
-        a &= MASK32
-        key = (op, long_off)
+                sp = c.sp - 4
+                if indexed:
+                    a = L[(sp - 4) >> 2] + (L[sp >> 2] << size)
+                    sp -= 4
+                else:
+                    a = L[sp >> 2]
+                c.sp = sp
+            return a & MASK32, rest
+
         if access == 0:
-            push(c, sized_read[size](a & (0xFFFF, 0xFFFE, 0xFFFC)[size]))
+            if size == 2:
+                def h(c, op, t):
+                    a, rest = address(c)
+                    sp = c.sp
+                    L[sp >> 2] = L[(a & 0xFFFC) >> 2]
+                    c.sp = sp + 4
+                    return rest
+            else:
+                def h(c, op, t):
+                    a, rest = address(c)
+                    sp = c.sp
+                    L[sp >> 2] = mem[a & 0xFFFF] if size == 0 else W[(a & 0xFFFE) >> 1]
+                    c.sp = sp + 4
+                    return rest
         elif access == 1:
-            sized_write(size, a, pop(c), c, t)
+            def h(c, op, t):
+                a, rest = address(c)
+                sp = c.sp - 4
+                c.sp = sp
+                sized_write(size, a, L[sp >> 2], c, t, op)
+                return rest
         elif access == 3:
-            push(c, a)
+            def h(c, op, t):
+                a, rest = address(c)
+                sp = c.sp
+                L[sp >> 2] = a
+                c.sp = sp + 4
+                return rest
         else:
-            aop = mem[c.pc]
-            c.pc += 1
-            v = sized_read[size](a & (0xFFFF, 0xFFFE, 0xFFFC)[size])
-            new, rest = _assign(c, aop, v, MASK32, False)
-            sized_write(size, a, new, c, t)
-            return T.mem_using[key] + rest
-        return T.mem[key]
+            read = sized_read[size]
+
+            def h(c, op, t):
+                a, rest = address(c)
+                pc = c.pc
+                aop = mem[pc]
+                c.pc = pc + 1
+                new, arest = _assign(c, aop, read(a & align), MASK32, False)
+                sized_write(size, a, new, c, t, op)
+                return rest + arest
+        h.__name__ = "op_mem"
+        return h
 
     # ------------------------------------------------------------------ $E0-$FF math
-    def op_math(c, op, t):
+    def make_math(op):
+        """A handler for math bytecode ``op`` (hot path): constant cost unless its loop varies."""
         f = op & 0x1F
         u = UNARY[f]
-        sp = c.sp
+        table = T._math[f]
+        const = table[0] if len(set(table)) == 1 else None
         if u is not None:
-            i = (sp - 4) >> 2
-            x = L[i]
-            L[i] = u(x)
-            return T.math(f, x, 0)
-        y = L[(sp - 4) >> 2]
-        i = (sp - 8) >> 2
-        x = L[i]
-        L[i] = BINARY[f](x, y)
-        c.sp = sp - 4
-        return T.math(f, x, y)
+            if const is not None:
+                def h(c, op, t):
+                    i = (c.sp - 4) >> 2
+                    L[i] = u(L[i])
+                    return const
+            else:
+                def h(c, op, t):
+                    i = (c.sp - 4) >> 2
+                    x = L[i]
+                    L[i] = u(x)
+                    return table[math_param(op, x, 0)]
+        else:
+            fn = BINARY[f]
+            if const is not None:
+                def h(c, op, t):
+                    sp = c.sp - 4
+                    i = (sp - 4) >> 2
+                    L[i] = fn(L[i], L[sp >> 2])
+                    c.sp = sp
+                    return const
+            else:
+                def h(c, op, t):
+                    sp = c.sp - 4
+                    i = (sp - 4) >> 2
+                    x, y = L[i], L[sp >> 2]
+                    L[i] = fn(x, y)
+                    c.sp = sp
+                    return table[math_param(op, x, y)]
+        h.__name__ = "op_math"
+        return h
 
     named = {
         "op_frame_result": op_frame, "op_frame": op_frame, "op_frame_result_trap": op_frame,
@@ -757,6 +829,7 @@ def build_handlers(chip, timing: Timing):
         "op_push_mask": op_push_mask, "op_push_imm1": op_push_imm, "op_push_imm2": op_push_imm,
         "op_push_imm3": op_push_imm, "op_push_imm4": op_push_imm,
         "op_reg_bit": op_reg, "op_reg_range": op_reg, "op_reg": op_reg,
-        "op_unknown": op_unknown, "op_var_long": op_var_long, "op_mem": op_mem, "op_math": op_math,
+        "op_unknown": op_unknown, "op_var_long": op_var_long,
     }
-    return [named[entry.handler] for entry in TABLE]
+    makers = {"op_mem": make_mem, "op_math": make_math}
+    return [makers[e.handler](e.code) if e.handler in makers else named[e.handler] for e in TABLE]

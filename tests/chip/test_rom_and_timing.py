@@ -58,3 +58,17 @@ def test_dispatch_list_covers_all_256_bytecodes_from_the_table():
 def test_a_path_of_plain_and_hub_instructions_rounds_hub_waits_to_the_window():
     # ADD: 14 plain, pop, 1 plain, pop, 21 plain, push, 3 plain (measured on spinsim)
     assert segments_rest([14, "H", 1, "H", 21, "H", 3], phase=8, t=8) == 188 == load_timing().math(0x0C, 1, 2)
+
+
+def test_access_offsets_lie_inside_the_shortest_path_of_their_bytecode():
+    """Otherwise a cog's next bytecode could be ordered before its previous one."""
+    from spinemu.chip.timing import access_offsets
+    t = load_timing()
+    acc = access_offsets()
+    for op in range(0x40, 0x80):
+        shortest = t.var_using[bool(op & 0x20)] if op & 3 == 2 else t.var[op]
+        assert acc[op] <= shortest, hex(op)
+    for op in range(0x80, 0xE0):
+        table = t.mem_using if op & 3 == 2 else t.mem
+        assert acc[op] <= table[(op, False)] + (min(t.assign_mem) if op & 3 == 2 else 0), hex(op)
+    assert acc[0x3F] <= t.reg[(0x3F, 0)] and acc[0x3D] <= t.reg[(0x3D, 0)] and acc[0x3E] <= t.reg[(0x3E, 0)]

@@ -213,6 +213,8 @@ def collect(probes, openspin, spinsim, instructions, max_cycles, verbose=False):
                         break
                     if i + 1 < len(my):
                         NEXT_PC[id(m)] = my[i + 1][1]
+                        if my[i + 1][3] != m[5]:
+                            continue                  # the cog was stopped and started again
                     if "rest" not in r:
                         continue
                     names, ctx = name_of(chip, m)
