@@ -33,7 +33,7 @@ from ..image import BOOT_FRAME, HUB_SIZE, ImageHeader, load_image
 from ..trace import PinTrace
 from .cog import PARKED, PIN_WAIT, RUNNING, STOPPED, IDLE_PASM, Cog
 from .control import CogStopped, Preempted, RebootRequested, Reschedule
-from .fastforward import LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
+from .fastforward import INTERRUPTED, LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
 from .registers import Registers
 from .rom import INTERPRETER_ENTRY, build_rom
 from .spin import build_handlers
@@ -151,6 +151,7 @@ class Chip:
         #: (the instrumented loop; used by the timing derivation and debugging)
         self.recorder = None
         self._tracking = None       # the learning interpreter (fastforward.py), built on first use
+        self.learn_tracked = 0      # bytecodes the latest learning attempt ran
         self._ff_loops = self._ff_skipped = 0
         self.last_target = None     # the target value of the latest assignment operator
         self.now = 0
@@ -494,7 +495,7 @@ class Chip:
         if busy is None:
             if c.bytecodes - c.learn_mark > c.learn_after and until - c.t > LEARN_HORIZON:
                 self._learn(c, until)
-                if c.busy is None or c.state != RUNNING:
+                if c.busy is None or c.state != RUNNING or c.pc != c.busy.head:
                     self._run_spin(c, until)
                     return
                 busy = c.busy
@@ -511,12 +512,17 @@ class Chip:
             self._park(c)
             return
         self._run_spin_to(c, until, busy.head)
+        if c.pc != busy.head and c.bytecodes - c.learn_mark > LEARN_AFTER:
+            c.busy = None               # the program left that loop: look for the next one
+            c.learn_after = 0
+            c.learn_mark = c.bytecodes
 
     # ------------------------------------------------------------------ parking busy loops
     def _park(self, c: Cog) -> None:
         """Take cog ``c`` out of the schedule: it repeats its learned loop until something it reads changes."""
         c.state = PARKED
         c.park_t0 = c.t
+        c.learn_mark = c.bytecodes
         for shift, i, _ in c.busy.reads:
             a = (i << shift) & 0xFFFF
             self.watch[a >> 2] = 1
@@ -570,8 +576,11 @@ class Chip:
         finally:
             log.clear()
         c.learn_mark = c.bytecodes
+        if loop is INTERRUPTED:
+            return                      # not a failure: try again at the next chance
         if loop is None:
-            c.learn_after = min(max(2 * c.learn_after, LEARN_AFTER), 1 << 20)
+            # wait until the failed attempt's cost is small against normal running
+            c.learn_after = max(LEARN_AFTER, 16 * self.learn_tracked)
         else:
             c.busy = loop
             self._ff_loops += 1
