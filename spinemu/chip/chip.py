@@ -415,7 +415,7 @@ class Chip:
     def _schedule(self, limit: int, progress) -> str:
         """Advance the cog furthest behind until every cog stopped or ``limit``. (Hot loop.)"""
         cogs = self.cogs
-        inputs = self.inputs
+        mem, acc = self.mem, self.access_at
         next_report = 0
         run = (self._run_spin_traced if self.recorder is not None
                else self._run_with_fast_forward if self.fast_forward else self._run_spin)
@@ -425,7 +425,8 @@ class Chip:
             ck = 0
             for k in cogs:
                 if k.state == RUNNING:
-                    key = self._key(k)
+                    key = k.t + 12
+                    key += ((k.hub_phase - key) & 15) + acc[mem[k.pc]]
                     if c is None or key < ck:
                         c, ck = k, key
             ext = self._next_external(limit) if self._pin_waiters else None
@@ -458,7 +459,8 @@ class Chip:
             cid = c.id
             for o in cogs:
                 if o.state == RUNNING and o is not c:
-                    key = self._key(o)
+                    key = o.t + 12
+                    key += ((o.hub_phase - key) & 15) + acc[mem[o.pc]]
                     bound = key + 1 if cid < o.id else key
                     if bound < until:
                         until = bound
