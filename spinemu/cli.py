@@ -111,18 +111,18 @@ class _Out:
 
 
 # ----------------------------------------------------------------------------- compile
-def _compile(path: str, include_dirs):
+def _compile(path: str, include_dirs, defines=()):
     from .compiler import compile_file
 
     if not os.path.exists(path):
         raise SpinError("no such file", path=path)
-    return compile_file(path, include_dirs=list(include_dirs or ()))
+    return compile_file(path, include_dirs=list(include_dirs or ()), defines=list(defines or ()))
 
 
 def cmd_compile(args, out: _Out) -> int:
     if _kind(args.source) != "spin":
         raise UsageError(f"'{args.source}' is not a .spin source file")
-    prog = _compile(args.source, args.include)
+    prog = _compile(args.source, args.include, args.define)
     for w in prog.warnings:
         out.err_console.print(w.render() if hasattr(w, "render") else str(w), markup=False)
     target = args.output or os.path.splitext(args.source)[0] + ".binary"
@@ -141,12 +141,12 @@ def cmd_compile(args, out: _Out) -> int:
 
 
 # ----------------------------------------------------------------------------- run
-def _load_target(path: str, include_dirs):
+def _load_target(path: str, include_dirs, defines=()):
     """(image bytes, source_map or None) for a .spin/.binary/.eeprom target."""
     from .image import load_image
 
     if _kind(path) == "spin":
-        prog = _compile(path, include_dirs)
+        prog = _compile(path, include_dirs, defines)
         table = getattr(prog, "line_table", None)
         source_map = (lambda addr: table.get(addr)) if isinstance(table, dict) else table
         return prog.binary, source_map, prog
@@ -245,7 +245,7 @@ def cmd_run(args, out: _Out) -> int:
         return _run_pbasic(args, out)
     if args.timing or args.debug_in:
         raise UsageError("--timing and --debug-in apply to BASIC Stamp programs (.bs2) only")
-    image, source_map, prog = _load_target(args.target, args.include)
+    image, source_map, prog = _load_target(args.target, args.include, args.define)
     from .image import ImageHeader
 
     clock = ImageHeader.parse(image).clkfreq or CLOCK_DEFAULT
@@ -453,6 +453,8 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("-e", "--eeprom", metavar="OUT.eeprom", help="also (or only) write the 32 KB EEPROM image")
     c.add_argument("-L", "-I", dest="include", action="append", metavar="DIR",
                    help="add a folder to search for OBJ files (after the source's own folder)")
+    c.add_argument("-D", dest="define", action="append", metavar="NAME",
+                   help="define NAME for #ifdef in every file (as OpenSpin's -D)")
     c.add_argument("--listing", metavar="FILE", help="write a listing (bytecode with source lines)")
     c.add_argument("-q", "--quiet", action="store_true", help="print nothing but errors")
     c.set_defaults(func=cmd_compile)
@@ -471,6 +473,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="log: '<cycle> <dir> <out>' lines; vcd: for GTKWave/PulseView (default: by extension, else log)")
     r.add_argument("--dump-hub", metavar="FILE", help="write the 32 KB hub RAM at the end of the run")
     r.add_argument("-L", "-I", dest="include", action="append", metavar="DIR", help="OBJ search folder")
+    r.add_argument("-D", dest="define", action="append", metavar="NAME", help="define NAME for #ifdef")
     r.add_argument("--compat", choices=["chip", "spinsim"], default="chip",
                    help="chip: model the real chip (default); spinsim: reproduce the reference simulator's shortcuts")
     r.add_argument("--inputs", choices=["pulldown", "pullup"], default="pulldown",

@@ -138,3 +138,12 @@ def test_sidebyside_of_bs2_and_spin_forward_revolution(tmp_path):
     code, out, _ = run("sidebyside", b, s, "--left-pins", "4..7", "--right-pins", "1..4",
                        "--left-clock", "1000000", "--steps", "48")
     assert code == 0 and "coil patterns agree for all 48 compared steps" in out
+
+
+@pytest.mark.parametrize("defines,image", [([], "ifdef_fast.binary"), (["-D", "FAST"], "ifdef_fast_D_FAST.binary")])
+def test_compile_with_defines_matches_openspin(tmp_path, defines, image):
+    data = ROOT / "tests" / "data" / "compiler" / "defines"
+    target = tmp_path / "out.binary"
+    code, _, err = run("compile", data / "ifdef_fast.spin", *defines, "-o", target)
+    assert code == 0, err
+    assert target.read_bytes() == (data / image).read_bytes()
