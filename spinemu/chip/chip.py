@@ -47,7 +47,6 @@ COMPAT_MODES = ("chip", "spinsim")
 COG_LOAD_CYCLES = 496 * 16 + 16
 _SPINSIM_START_CYCLES = -4          # spinsim: first instruction in the COGINIT's last cycle
 _NEVER = 1 << 62
-_WRAP = 1 << 32
 
 
 def _preempt_handler(c, op, t):
@@ -93,8 +92,6 @@ class Chip:
     Raises:
         ImageError: if ``image`` is not a valid Propeller image.
 
-    >>> from spinemu.image import to_eeprom
-    >>> img = bytes.fromhex("00b4c4046f001000180020001000240032000000")
     """
 
     def __init__(self, image: bytes, *, compat: str = "chip", inputs=None,
