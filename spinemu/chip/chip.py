@@ -28,7 +28,7 @@ import time
 from dataclasses import dataclass, field
 from typing import Callable, Optional
 
-from ..diagnostics import EmulationError, ImageError
+from ..diagnostics import EmulationError
 from ..image import BOOT_FRAME, HUB_SIZE, ImageHeader, load_image
 from ..trace import PinTrace
 from .cog import PARKED, PIN_WAIT, RUNNING, STOPPED, IDLE_PASM, Cog
