@@ -61,8 +61,10 @@ class RunResult:
         trace: every pin change (first entry: the state at cycle 0).
         hub: the 32 KB of hub RAM when the run ended.
         end_cycle: the cycle the run ended at.
-        reason: ``"all cogs stopped"``, ``"cycle limit"``, ``"reboot"`` or
-            ``"deadlock"`` (every cog waits on pins that can never change).
+        reason: ``"all cogs stopped"``, ``"cycle limit"``, ``"reboot"``,
+            ``"deadlock"`` (every cog waits on pins that can never change),
+            ``"stalled"`` (the cogs left spin in loops that can never end) or
+            ``"only PASM cogs left"`` (PASM is not emulated).
         cog_events: ``(cycle, cog, "start" | "stop", detail)``.
         warnings: things the emulation could not do faithfully.
         stats: bytecodes executed (total and per cog), wall time, ...
@@ -328,6 +330,12 @@ class Chip:
         raise Reschedule(_NEVER - tf)
 
     def _wake_pin_waiters(self, t: int) -> None:
+        """Resume the cogs whose WAITPEQ/WAITPNE condition holds at cycle ``t``.
+
+        Called from inside another cog's bytecode (a pin write), it also
+        preempts that cog's run loop, so the scheduler sees the woken cog.
+        """
+        woke = False
         for c in list(self._pin_waiters):
             mask, state, equal, after = c.pin_wait
             if ((self.ina(t) & mask) == state) == equal:
@@ -335,6 +343,14 @@ class Chip:
                 c.pin_wait = None
                 c.state = RUNNING
                 c.t = t + after
+                woke = True
+        if woke:
+            self._request_preemption()
+
+    def _request_preemption(self) -> None:
+        """End the running cog's loop after its current bytecode (see control.Preempted)."""
+        self._preempt = True
+        self.handlers[:] = [_preempt_handler] * 256
 
     # ------------------------------------------------------------------ RUN
     def run_helper(self, c: Cog, tf: int) -> int:
@@ -444,7 +460,10 @@ class Chip:
                         return "cycle limit"
                     return "deadlock"
                 if any(k.state == IDLE_PASM for k in cogs):
-                    return "cycle limit" if limit < _NEVER else "deadlock"
+                    if limit < _NEVER:
+                        self.now = limit
+                        return "cycle limit"
+                    return "only PASM cogs left"
                 return "all cogs stopped"
             t = c.t
             if ck >= limit:
@@ -559,8 +578,7 @@ class Chip:
                 self._unpark(p, key + 1 if p.id < writer.id else key)
                 woke = True
         if woke:
-            self._preempt = True
-            self.handlers[:] = [_preempt_handler] * 256
+            self._request_preemption()
 
     def _end_preemption(self) -> None:
         self.handlers[:] = self._handlers
