@@ -24,15 +24,11 @@ jumps.  Everything else is written for clarity.
 from __future__ import annotations
 
 from ..bytecode import TABLE
-from .control import CogStopped, RebootRequested, Reschedule
+from .control import RebootRequested, Reschedule
 from .mathops import BINARY, MASK32, UNARY
-from .rom import INTERPRETER_ENTRY, RETURN_TO_STOP
 from .timing import Timing, math_param
 
 __all__ = ["build_handlers", "random_forward", "random_reverse"]
-
-_NEVER = 1 << 62
-
 
 def _parity(v: int) -> int:
     return bin(v).count("1") & 1
@@ -126,15 +122,6 @@ def build_handlers(chip, timing: Timing):
             return (v - 0x8000 if v & 0x4000 else v), True
         c.pc = pc + 1
         return (b - 0x80 if b & 0x40 else b), False
-
-    def offset_operand(c):
-        pc = c.pc
-        b = mem[pc]
-        if b & 0x80:
-            c.pc = pc + 2
-            return ((b & 0x7F) << 8) | mem[pc + 1], True
-        c.pc = pc + 1
-        return b, False
 
     # ------------------------------------------------------------------ registers
     regs = chip.registers   # register access: read(c, r, t), write(c, r, v, t)
