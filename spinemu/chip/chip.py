@@ -34,6 +34,7 @@ from typing import Callable, Optional
 from ..diagnostics import EmulationError
 from ..image import BOOT_FRAME, HUB_SIZE, ImageHeader, load_image
 from ..trace import PinTrace
+from .blocks import HOT as BLOCK_THRESHOLD
 from .cog import PARKED, RUNNING, STOPPED, IDLE_PASM, Cog
 from .control import CogStopped, Reschedule
 from .pins import Pins
@@ -90,6 +91,8 @@ class Chip(Pins, Scheduler):
             in chip mode, pull-up in spinsim mode (spinsim reads them as 1).
         source_map: optional ``hub_addr -> (path, line)`` for fault messages.
         fast_forward: skip provably idle busy-wait loops (results unchanged).
+        compile_blocks: run hot bytecode as compiled blocks (:mod:`.blocks`;
+            results unchanged).
 
     Raises:
         ImageError: if ``image`` is not a valid Propeller image.
@@ -98,7 +101,7 @@ class Chip(Pins, Scheduler):
 
     def __init__(self, image: bytes, *, compat: str = "chip", inputs=None,
                  source_map: Optional[Callable] = None, fast_forward: bool = True,
-                 timing: Optional[Timing] = None):
+                 timing: Optional[Timing] = None, compile_blocks: bool = True):
         if compat not in COMPAT_MODES:
             raise ValueError(f"compat must be one of {COMPAT_MODES}, not {compat!r}")
         binary = load_image(bytes(image))
@@ -107,6 +110,7 @@ class Chip(Pins, Scheduler):
         self.spinsim = compat == "spinsim"
         self.source_map = source_map
         self.fast_forward = fast_forward
+        self.compile_blocks = compile_blocks
         self.timing = timing or load_timing()
         from .inputs import make_input_model
         self.inputs = make_input_model(inputs, pull_up=self.spinsim)
@@ -153,6 +157,16 @@ class Chip(Pins, Scheduler):
         self.learn_tracked = 0      # bytecodes the latest learning attempt ran
         self._ff_loops = self._ff_skipped = 0
         self.last_target = None     # the target value of the latest assignment operator
+        # compiled blocks (blocks.py): one entry per hub address, a stub until compiled
+        self._compiler = None
+        #: times a bytecode address starts a run before a block is compiled for it
+        self.block_threshold = BLOCK_THRESHOLD
+        if compile_blocks:
+            self._blocks = [self._block_stub] * 0x10000
+            self._heat = bytearray(0x10000)
+            self._run_plain, self._run_to = self._run_blocks, self._run_blocks
+        else:
+            self._run_plain, self._run_to = self._run_spin, self._run_spin_to
         self.now = 0
 
 
@@ -328,7 +342,8 @@ class Chip(Pins, Scheduler):
 
     def _ff_stats(self) -> dict:
         return {"fast_forward": self.fast_forward, "busy_loops_learned": self._ff_loops,
-                "bytecodes_skipped": self._ff_skipped}
+                "bytecodes_skipped": self._ff_skipped,
+                "blocks_compiled": self._compiler.count if self._compiler is not None else 0}
 
 
     def _boot(self) -> None:

@@ -13,6 +13,7 @@ event leaves it by exception, see :mod:`spinemu.chip.control`).
 """
 from __future__ import annotations
 
+from .blocks import BUSY, BlockCompiler
 from .cog import PARKED, RUNNING, IDLE_PASM, Cog
 from .control import CogStopped, Preempted, RebootRequested, Reschedule
 from .fastforward import INTERRUPTED, LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
@@ -25,6 +26,14 @@ _NEVER = NEVER
 
 def _preempt_handler(c, op, t):
     raise Preempted
+
+
+def _interpreted(c, tf, limit):
+    """The block table's entry where the first bytecode is left to the interpreter."""
+    return -1
+
+#: compilations of one address (its code keeps changing) after which it stays interpreted
+_RECOMPILE_LIMIT = 8
 
 
 class Scheduler:
@@ -51,7 +60,7 @@ class Scheduler:
         mem, acc = self.mem, self.access_at
         next_report = 0
         run = (self._run_spin_traced if self.recorder is not None
-               else self._run_with_fast_forward if self.fast_forward else self._run_spin)
+               else self._run_with_fast_forward if self.fast_forward else self._run_plain)
         while True:
             # the running cog whose next bytecode reaches the hub first (lowest id on ties)
             c = None
@@ -134,22 +143,22 @@ class Scheduler:
             if c.bytecodes - c.learn_mark > c.learn_after and until - c.t > LEARN_HORIZON:
                 self._learn(c, until)
                 if c.busy is None or c.state != RUNNING or c.pc != c.busy.head:
-                    self._run_spin(c, until)
+                    self._run_plain(c, until)
                     return
                 busy = c.busy
             else:
-                self._run_spin(c, until)
+                self._run_plain(c, until)
                 return
         if c.pc == busy.head:
             if not busy.still_valid(self, c):
                 c.busy = None                   # learn again at once: often only a value changed
                 c.learn_after = 0
                 c.learn_mark = c.bytecodes
-                self._run_spin(c, until)
+                self._run_plain(c, until)
                 return
             self._park(c)
             return
-        self._run_spin_to(c, until, busy.head)
+        self._run_to(c, until, busy.head)
         if c.pc != busy.head and c.bytecodes - c.learn_mark > LEARN_AFTER:
             c.busy = None               # the program left that loop: look for the next one
             c.learn_after = 0
@@ -160,9 +169,9 @@ class Scheduler:
         c.state = PARKED
         c.park_t0 = c.t
         c.learn_mark = c.bytecodes
+        watch = self.watch
         for shift, i, _ in c.busy.reads:
-            a = (i << shift) & 0xFFFF
-            self.watch[a >> 2] = 1
+            watch[((i << shift) & 0xFFFF) >> 2] |= BUSY
         self._parked.append(c)
 
     def _unpark(self, c: Cog, t_limit: int) -> None:
@@ -175,10 +184,12 @@ class Scheduler:
         self._ff_skipped += k * busy.bytecodes
         c.state = RUNNING
         self._parked.remove(c)
-        self.watch[:] = bytes(len(self.watch))
+        watch = self.watch
+        for shift, i, _ in busy.reads:
+            watch[((i << shift) & 0xFFFF) >> 2] &= ~BUSY
         for p in self._parked:
             for shift, i, _ in p.busy.reads:
-                self.watch[((i << shift) & 0xFFFF) >> 2] = 1
+                watch[((i << shift) & 0xFFFF) >> 2] |= BUSY
         if c.t < t_limit:
             self._run_spin(c, t_limit)
 
@@ -225,6 +236,8 @@ class Scheduler:
         else:
             c.busy = loop
             self._ff_loops += 1
+            if self._compiler is not None:
+                self._compiler.add_boundary(loop.head)
 
     def _run_spin_to(self, c: Cog, limit: int, stop_pc: int) -> None:
         """:meth:`_run_spin`, but stop when the cog comes back to ``stop_pc`` (a loop head)."""
@@ -305,6 +318,94 @@ class Scheduler:
         c.bytecodes += n
         if c.state == RUNNING:
             c.t = t
+
+    # ------------------------------------------------------------------ compiled blocks
+    def _run_blocks(self, c: Cog, limit: int, stop_pc: int = -1) -> None:
+        """:meth:`_run_spin` a compiled block at a time (blocks.py); stops at ``stop_pc`` too. (Hot loop.)
+
+        Blocks check themselves that they end before ``limit``; where one
+        cannot run, the bytecode is interpreted exactly as :meth:`_run_spin`
+        does it, with the same exits.
+        """
+        if self._preempt:                       # as _run_spin: a pending preemption ends the slice at once
+            self._end_preemption()
+            return
+        pc = c.pc
+        if not 0 <= pc < 0x10000:
+            return self._run_spin(c, limit) if stop_pc < 0 else self._run_spin_to(c, limit, stop_pc)
+        B = self._blocks
+        mem = self.mem
+        H = self.handlers
+        ACC = self.access_at
+        P = c.hub_phase
+        t = c.t
+        tf = t
+        try:
+            while True:
+                tf = t + 12
+                tf += (P - tf) & 15
+                r = B[pc](c, tf, limit)
+                if r >= 0:
+                    t = r
+                    pc = c.pc
+                    if pc == stop_pc:
+                        break
+                    continue
+                if r != -1:
+                    t = -2 - r
+                # the interpreter's step, as in _run_spin
+                pc = c.pc
+                op = mem[pc]
+                tf = t + 12
+                tf += (P - tf) & 15
+                if tf + ACC[op] >= limit:
+                    break
+                c.pc = pc + 1
+                t = tf + H[op](c, op, t)
+                c.bytecodes += 1
+                if self._preempt:
+                    self._end_preemption()
+                    break
+                pc = c.pc
+                if pc == stop_pc:
+                    break
+                if not 0 <= pc < 0x10000:
+                    c.t = t
+                    return self._run_spin(c, limit) if stop_pc < 0 else self._run_spin_to(c, limit, stop_pc)
+        except Reschedule as e:
+            t = tf + e.rest
+            c.bytecodes += 1
+        except Preempted:
+            c.pc = pc
+            self._end_preemption()
+        except CogStopped:
+            c.bytecodes += 1
+            return
+        except RebootRequested:
+            c.bytecodes += 1
+            c.t = tf
+            raise
+        except IndexError:
+            raise self.fault(c, c.pc - 1, "stack or address out of hub range") from None
+        if c.state == RUNNING:
+            c.t = t
+
+    def _block_stub(self, c: Cog, tf: int, limit: int) -> int:
+        """The block table's entry for an address without a block: count, compile when hot."""
+        pc = c.pc
+        heat = self._heat[pc]
+        hot = self.block_threshold
+        if heat < hot:
+            self._heat[pc] = heat + 1
+            return -1
+        if self._compiler is None:
+            self._compiler = BlockCompiler(self, self._blocks, self._block_stub)
+        fn = self._compiler.compile(pc) if heat < hot + _RECOMPILE_LIMIT else None
+        self._heat[pc] = min(heat + 1, 255)
+        if fn is None:
+            fn = _interpreted
+        self._blocks[pc] = fn
+        return fn(c, tf, limit)
 
     def _run_spin_traced(self, c: Cog, limit: int) -> None:
         """The instrumented twin of :meth:`_run_spin`: runs one bytecode and records it."""

@@ -57,27 +57,35 @@ def article_image(name: str) -> bytes:
 
 
 def make_image(code: bytes, *, var_longs: int = 8, locals_bytes: int = 0, clkfreq: int = 80_000_000,
-               dat: bytes = b"") -> bytes:
-    """A one-object, one-method image whose method is ``code`` (for bytecode unit tests).
+               dat: bytes = b"", methods=()) -> bytes:
+    """A one-object image whose first method is ``code`` (for bytecode unit tests).
 
-    ``dat`` is placed right after the object table (OBJ-relative offset 8);
-    the code follows it.
+    ``dat`` is placed right after the object table (OBJ-relative offset 8
+    for one method); the code follows it.  ``methods`` adds more methods
+    after the first, as ``(code, locals_bytes)`` (method 2, 3, ...).
     """
     from spinemu.image import image_checksum
     dat = dat + bytes(-len(dat) % 4)
-    code_off = 8 + len(dat)
-    body = dat + code
-    size = 8 + len(body)
+    all_methods = [(code, locals_bytes)] + list(methods)
+    table = 4 + 4 * len(all_methods)
+    offsets = []
+    body = dat
+    for m_code, _ in all_methods:
+        offsets.append(table + len(body))
+        body += m_code
+    size = table + len(body)
     size += -size % 4
-    obj = (size.to_bytes(2, "little") + bytes([2, 0]) + code_off.to_bytes(2, "little")
-           + locals_bytes.to_bytes(2, "little") + body)
+    obj = size.to_bytes(2, "little") + bytes([len(all_methods) + 1, 0])
+    for off, (_, loc) in zip(offsets, all_methods):
+        obj += off.to_bytes(2, "little") + loc.to_bytes(2, "little")
+    obj += body
     obj += bytes(size - len(obj))
     pbase = 0x10
     vbase = pbase + size
     dbase = vbase + 4 * var_longs + 8
     dcurr = dbase + 4 + locals_bytes
     header = bytearray(clkfreq.to_bytes(4, "little") + bytes([0x6F, 0])
-                       + b"".join(v.to_bytes(2, "little") for v in (pbase, vbase, dbase, pbase + code_off, dcurr)))
+                       + b"".join(v.to_bytes(2, "little") for v in (pbase, vbase, dbase, pbase + offsets[0], dcurr)))
     img = bytearray(header + obj)
     img[5] = image_checksum(bytes(img))
     return bytes(img)
