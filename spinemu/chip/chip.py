@@ -125,6 +125,7 @@ class Chip(Pins, Scheduler):
         self.mem_longs = view.cast("I")
 
         self.cogs = [Cog(i) for i in range(8)]
+        self._cogs_changed = True       # a cog's state changed: the scheduler lists the running ones again
         for cog in self.cogs:
             cog.hub_phase = 8 if self.spinsim else (8 + 2 * cog.id) & 15
         self.locks = [False] * 8
@@ -193,6 +194,7 @@ class Chip(Pins, Scheduler):
         c.par = par & 0xFFFC
         c.engine = "spin"
         c.state = RUNNING
+        self._cogs_changed = True
         c.started_at = t_first
         m = self.mem_words
         base = (par & 0xFFFC) + 2
@@ -215,6 +217,7 @@ class Chip(Pins, Scheduler):
         if self.counters_on:
             self.counters.flush(c, t)
         c.state = STOPPED
+        self._cogs_changed = True
         c.pin_wait = None
         c.t = _NEVER
         self.now = max(self.now, t)
@@ -247,6 +250,7 @@ class Chip(Pins, Scheduler):
     def _start_pasm(self, target: Cog, code: int, par: int, t_first: int, by: Cog) -> None:
         target.reset_registers()
         target.state = IDLE_PASM
+        self._cogs_changed = True
         target.engine = "pasm"
         target.par = par
         target.t = _NEVER

@@ -61,6 +61,7 @@ class Pins:
             return issue + after
         c.pin_wait = (mask, state, equal, after)
         c.state = PIN_WAIT
+        self._cogs_changed = True
         self._pin_waiters.append(c)
         self._ext_seen = max(self._ext_seen, t)
         raise Reschedule(_NEVER - tf)
@@ -78,6 +79,7 @@ class Pins:
                 self._pin_waiters.remove(c)
                 c.pin_wait = None
                 c.state = RUNNING
+                self._cogs_changed = True
                 c.t = t + after
                 woke = True
         if woke:

@@ -55,22 +55,40 @@ class Scheduler:
         return c.t - t
 
     def _schedule(self, limit: int, progress) -> str:
-        """Advance the cog furthest behind until every cog stopped or ``limit``. (Hot loop.)"""
+        """Advance the cog furthest behind until every cog stopped or ``limit``. (Hot loop.)
+
+        A cog whose ``engine`` is an object rather than a name (the Python
+        engine of :mod:`spinemu.translate`) is run by ``engine.run(cog,
+        until)``, which must advance ``cog.t`` (or stop the cog) as the
+        bytecode loop does; its next access comes from :meth:`_key`.
+        """
         cogs = self.cogs
         mem, acc = self.mem, self.access_at
         next_report = 0
-        run = (self._run_spin_traced if self.recorder is not None
-               else self._run_with_fast_forward if self.fast_forward else self._run_plain)
+        traced = self.recorder is not None
+        ff = self.fast_forward and not traced
+        run = self._run_spin_traced if traced else self._run_plain
+        running: list = []
+        generic = False
         while True:
-            # the running cog whose next bytecode reaches the hub first (lowest id on ties)
-            c = None
-            ck = 0
-            for k in cogs:
-                if k.state == RUNNING:
+            if self._cogs_changed:
+                self._cogs_changed = False
+                running = [k for k in cogs if k.state == RUNNING]
+                generic = any(k.engine.__class__ is not str for k in running)
+            # the two running cogs whose next bytecodes reach the hub first (lowest id on ties)
+            c = c2 = None
+            ck = ck2 = 0
+            for k in running:
+                if generic:
+                    key = self._key(k)
+                else:
                     key = k.t + 12
                     key += ((k.hub_phase - key) & 15) + acc[mem[k.pc]]
-                    if c is None or key < ck:
-                        c, ck = k, key
+                if c is None or key < ck:
+                    c2, ck2 = c, ck
+                    c, ck = k, key
+                elif c2 is None or key < ck2:
+                    c2, ck2 = k, key
             ext = self._next_external(limit) if self._pin_waiters else None
             if ext is not None and (c is None or ext <= c.t):
                 self.now = self._ext_seen = ext         # an input edge or a counter edge
@@ -100,20 +118,23 @@ class Scheduler:
                 for p in list(self._parked):
                     self._unpark(p, limit)
                 return "cycle limit"
+            # run c until just before the next other cog's access (it goes first on a tie if its id is lower)
             until = limit
-            cid = c.id
-            for o in cogs:
-                if o.state == RUNNING and o is not c:
-                    key = o.t + 12
-                    key += ((o.hub_phase - key) & 15) + acc[mem[o.pc]]
-                    bound = key + 1 if cid < o.id else key
-                    if bound < until:
-                        until = bound
+            if c2 is not None:
+                until = ck2 + 1 if c.id < c2.id else ck2
+                if until > limit:
+                    until = limit
             if ext is not None and ext < until:
                 until = ext
             self.now = t
             try:
-                run(c, until)
+                if generic and c.engine.__class__ is not str:
+                    c.engine.run(c, until)
+                elif ff and (c.busy is not None or (c.bytecodes - c.learn_mark > c.learn_after
+                                                    and until - t > LEARN_HORIZON)):
+                    self._run_with_fast_forward(c, until)
+                else:
+                    run(c, until)
             except RebootRequested:
                 self.now = c.t
                 return "reboot"
@@ -167,6 +188,7 @@ class Scheduler:
     def _park(self, c: Cog) -> None:
         """Take cog ``c`` out of the schedule: it repeats its learned loop until something it reads changes."""
         c.state = PARKED
+        self._cogs_changed = True
         c.park_t0 = c.t
         c.learn_mark = c.bytecodes
         watch = self.watch
@@ -183,6 +205,7 @@ class Scheduler:
         busy.skipped += k * busy.bytecodes
         self._ff_skipped += k * busy.bytecodes
         c.state = RUNNING
+        self._cogs_changed = True
         self._parked.remove(c)
         watch = self.watch
         for shift, i, _ in busy.reads:

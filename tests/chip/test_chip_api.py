@@ -194,3 +194,23 @@ def test_a_busy_loop_on_a_variable_another_cog_changes_is_parked_and_woken_exact
         assert fast.stats["busy_loops_learned"] > 0 and fast.stats["bytecodes_skipped"] > 1000
         assert (fast.trace.changes, fast.hub, fast.end_cycle) == (slow.trace.changes, slow.hub, slow.end_cycle)
         assert fast.stats["bytecodes_per_cog"] == slow.stats["bytecodes_per_cog"]
+
+
+def test_a_cog_whose_engine_is_an_object_is_run_by_that_engine():
+    # the extension point of spinemu.translate: engine.run(cog, until) advances the cog
+    chip = Chip(article_image("as_printed_simple_stepper"))
+    calls = []
+
+    class Engine:
+        def run(self, c, until):
+            calls.append((c.id, c.t, until))
+            c.t += 1_000
+            if len(calls) == 5:
+                chip.stop_cog(c, c.t, "the engine is done")
+
+    chip._boot()
+    chip.cogs[0].engine = Engine()
+    result = chip.run(max_cycles=1_000_000)
+    assert result.reason == "all cogs stopped" and len(calls) == 5
+    assert [t for _, t, _ in calls] == [calls[0][1] + 1_000 * k for k in range(5)]
+    assert all(until == 1_000_000 for _, _, until in calls)
