@@ -157,6 +157,8 @@ class Chip(Pins, Scheduler):
         self._tracking = None       # the learning interpreter (fastforward.py), built on first use
         self.learn_tracked = 0      # bytecodes the latest learning attempt ran
         self._ff_loops = self._ff_skipped = 0
+        from .fastforward import LoopMemory
+        self._loop_memory = LoopMemory()
         self.last_target = None     # the target value of the latest assignment operator
         # compiled blocks (blocks.py): one entry per hub address, a stub until compiled
         self._compiler = None

@@ -27,7 +27,7 @@ Skipped bytecodes are counted in the statistics as executed.
 """
 from __future__ import annotations
 
-__all__ = ["BusyLoop", "learn_busy_loop", "IMPURE_OPS", "LEARN_AFTER", "LEARN_HORIZON"]
+__all__ = ["BusyLoop", "LoopMemory", "learn_busy_loop", "IMPURE_OPS", "LEARN_AFTER", "LEARN_HORIZON"]
 
 #: bytecodes a cog runs without a wait before a learning attempt
 LEARN_AFTER = 2000
@@ -116,6 +116,46 @@ class BusyLoop:
             if views[shift][i] != v:
                 return False
         return True
+
+
+class LoopMemory:
+    """The busy loops learned so far, found again by the values they read.
+
+    A parked loop is woken when a value it reads changes (``repeat until
+    motor.getSteps == 0`` wakes at every step).  The loop the cog then runs
+    is the same code in the same state, but its learned iteration was only
+    proven for the old values; one proven for the new values may have been
+    learned before (the stepper counts the same steps down again), and is
+    as good as a new one: :meth:`BusyLoop.still_valid` checks the same things.
+    """
+
+    #: loops kept per cog and loop head (the oldest are dropped first)
+    KEEP = 256
+
+    def __init__(self):
+        # (cog id, head, t mod 16, state) -> {read addresses: {read values: loop}}
+        self._loops: dict = {}
+
+    def add(self, c, loop: "BusyLoop") -> None:
+        key = (c.id, loop.head, loop.phase, loop.state)
+        shapes = self._loops.setdefault(key, {})
+        addrs = tuple((s, i) for s, i, _ in loop.reads)
+        known = shapes.setdefault(addrs, {})
+        if len(known) >= self.KEEP:
+            del known[next(iter(known))]
+        known[tuple(v for _, _, v in loop.reads)] = loop
+
+    def find(self, chip, c):
+        """A remembered loop cog ``c`` (at a loop head) would run now, or ``None``."""
+        shapes = self._loops.get((c.id, c.pc, c.t & 15, cog_state(c)))
+        if not shapes:
+            return None
+        views = (chip.mem, chip.mem_words, chip.mem_longs)
+        for addrs, known in shapes.items():
+            loop = known.get(tuple(views[s][i] for s, i in addrs))
+            if loop is not None:
+                return loop
+        return None
 
 
 def cog_state(c) -> tuple:

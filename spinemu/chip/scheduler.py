@@ -158,25 +158,39 @@ class Scheduler:
         return nxt if nxt is not None and nxt < limit else None
 
     def _run_with_fast_forward(self, c: Cog, until: int) -> None:
-        """Run ``c`` until ``until``, skipping iterations of a learned busy loop (see fastforward.py)."""
+        """Run ``c`` until ``until``, skipping iterations of a learned busy loop (see fastforward.py).
+
+        A cog keeps its loop while it runs elsewhere; at the loop's head the
+        loop is parked if it is still valid.  If only the values it reads
+        changed (the usual reason it was woken), a loop learned before with
+        the current values is taken from the loop memory, or one is learned
+        at once from the head.
+        """
         busy = c.busy
         if busy is None:
             if c.bytecodes - c.learn_mark > c.learn_after and until - c.t > LEARN_HORIZON:
                 self._learn(c, until)
-                if c.busy is None or c.state != RUNNING or c.pc != c.busy.head:
+                busy = c.busy
+                if busy is None or c.state != RUNNING or c.pc != busy.head:
                     self._run_plain(c, until)
                     return
-                busy = c.busy
             else:
                 self._run_plain(c, until)
                 return
         if c.pc == busy.head:
             if not busy.still_valid(self, c):
-                c.busy = None                   # learn again at once: often only a value changed
-                c.learn_after = 0
-                c.learn_mark = c.bytecodes
-                self._run_plain(c, until)
-                return
+                loop = self._loop_memory.find(self, c)
+                if loop is None:
+                    if until - c.t <= LEARN_HORIZON:
+                        self._run_plain(c, until)       # no time to learn now: at the next visit
+                        return
+                    self._learn(c, until)
+                    loop = c.busy
+                    if loop is busy or loop is None or c.state != RUNNING or c.pc != loop.head:
+                        if c.state == RUNNING:
+                            self._run_plain(c, until)
+                        return
+                c.busy = loop
             self._park(c)
             return
         self._run_to(c, until, busy.head)
@@ -255,10 +269,12 @@ class Scheduler:
             return                      # not a failure: try again at the next chance
         if loop is None:
             # wait until the failed attempt's cost is small against normal running
+            c.busy = None
             c.learn_after = max(LEARN_AFTER, 16 * self.learn_tracked)
         else:
             c.busy = loop
             self._ff_loops += 1
+            self._loop_memory.add(c, loop)
             if self._compiler is not None:
                 self._compiler.add_boundary(loop.head)
 
