@@ -1,0 +1,69 @@
+"""One cog: the registers a Spin interpreter cog keeps, and its place in time.
+
+A cog running Spin holds the interpreter's state registers (Propeller Manual
+v1.2, "Spin interpreter"; register numbers as the ROM interpreter uses them and
+as Spin's ``REG`` bytecodes reach them)::
+
+    $1E9  cog id          $1EA  dcall: newest unfinished call frame (+6)
+    $1EB  pbase           $1EC  vbase           $1ED  dbase
+    $1EE  pcurr           $1EF  dcurr (stack pointer)
+
+plus the special registers $1F0-$1FF (PAR, CNT, INA, INB, OUTA, OUTB, DIRA,
+DIRB, CTRA, CTRB, FRQA, FRQB, PHSA, PHSB, VCFG, VSCL).
+
+``t`` is the cycle at which the cog starts its next bytecode.  ``hub_phase``
+is the value ``t mod 16`` takes when one of its hub instructions completes.
+
+The class is engine-neutral apart from the Spin fields, so a PASM engine can
+later run a cog through the same scheduler: ``engine`` names what runs it.
+"""
+from __future__ import annotations
+
+__all__ = ["Cog", "STOPPED", "RUNNING", "PIN_WAIT", "IDLE_PASM"]
+
+STOPPED, RUNNING, PIN_WAIT, IDLE_PASM = "stopped", "running", "pin wait", "pasm (not emulated)"
+
+
+class Cog:
+    """State of one of the eight cogs."""
+
+    __slots__ = (
+        "id", "state", "engine", "t", "hub_phase", "started_at",
+        # Spin interpreter registers
+        "pc", "pc_hi", "sp", "dbase", "pbase", "pbase_hi", "vbase", "dcall", "scratch",
+        # special registers
+        "par", "outa", "dira", "outb", "dirb", "ctra", "ctrb", "frqa", "frqb", "phsa", "phsb",
+        "vcfg", "vscl",
+        # waiting on pins: (mask, state, equal, remaining cycles after the match)
+        "pin_wait",
+        # statistics
+        "bytecodes",
+    )
+
+    def __init__(self, cog_id: int):
+        self.id = cog_id
+        self.state = STOPPED
+        self.engine = None
+        self.t = 0
+        self.hub_phase = 8
+        self.started_at = 0
+        self.bytecodes = 0
+        self.reset_registers()
+
+    def reset_registers(self) -> None:
+        """The state of a cog just (re)started: every register zero."""
+        self.pc = self.pc_hi = self.sp = self.dbase = self.pbase = self.pbase_hi = 0
+        self.vbase = self.dcall = 0
+        self.scratch = [0] * 16        # $1E0-$1EF as REG bytecodes see them
+        self.par = 0
+        self.outa = self.dira = self.outb = self.dirb = 0
+        self.ctra = self.ctrb = self.frqa = self.frqb = self.phsa = self.phsb = 0
+        self.vcfg = self.vscl = 0
+        self.pin_wait = None
+
+    @property
+    def running(self) -> bool:
+        return self.state in (RUNNING, PIN_WAIT)
+
+    def __repr__(self) -> str:  # pragma: no cover - debugging aid
+        return f"<Cog {self.id} {self.state} t={self.t} pc=${self.pc:04X} sp=${self.sp:04X}>"

@@ -1,0 +1,32 @@
+"""Signals a bytecode handler raises to hand control back to the scheduler.
+
+They are exceptions because they are rare: the interpreter's hot loop pays
+nothing for them (zero-cost ``try`` in CPython 3.11) and checks no flags.
+Each carries ``rest``: the cycles from the bytecode's fetch to the start of
+the cog's next bytecode, as a normal handler would have returned.
+"""
+from __future__ import annotations
+
+__all__ = ["Reschedule", "CogStopped", "RebootRequested"]
+
+
+class Reschedule(Exception):
+    """The bytecode changed what other cogs do (started or stopped a cog,
+    changed pins someone waits on): the scheduler must look again."""
+
+    def __init__(self, rest: int):
+        self.rest = rest
+
+
+class CogStopped(Exception):
+    """The running cog stopped itself; ``rest`` = cycles from fetch to the stop."""
+
+    def __init__(self, rest: int):
+        self.rest = rest
+
+
+class RebootRequested(Exception):
+    """CLKSET with bit 7 set: the chip reboots."""
+
+    def __init__(self, rest: int):
+        self.rest = rest

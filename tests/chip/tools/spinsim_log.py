@@ -1,0 +1,92 @@
+"""Read spinsim 0.99 instruction logs (``spinsim -p -l LOG -N image``) into bytecode records.
+
+Development tool for :mod:`derive_timing`; it only runs a spinsim binary the
+user points it at and parses what that binary prints.  Nothing of spinsim or
+of the ROM is stored.
+
+A log line looks like ``Cog 0:     196 009 00bc0bee    rdbyte 005, 1ee R=00000032``:
+cog, cycle, cog address, instruction word, a flag (``W`` waiting for the hub or
+a wait, ``X`` condition false, ``I`` pipeline slot) and the disassembly.  The
+ROM interpreter starts every bytecode at cog address $008 and fetches the
+opcode with the hub read at $009; the instruction at $00A runs right after the
+fetch completes.
+"""
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+
+__all__ = ["run_spinsim_log", "parse_log", "bytecodes", "pin_writes", "cog_starts"]
+
+LINE = re.compile(r"^Cog (\d):\s+(\d+) ([0-9a-f]{3}) ([0-9a-f]{8}) ([WXI ]) (.*)$")
+RVAL = re.compile(r"R=([0-9a-f]{8})")
+
+
+def run_spinsim_log(spinsim: str, image_path: str, log_path: str, instructions: int) -> None:
+    """Run ``spinsim -p -l log_path -<instructions> image_path``."""
+    subprocess.run([spinsim, "-p", "-l", log_path, f"-{instructions}", image_path],
+                   capture_output=True, timeout=1200, check=False)
+
+
+def parse_log(path: str) -> dict:
+    """``{cog: [(cycle, cog_addr, instr_hex, flag, text), ...]}``."""
+    cogs: dict = {}
+    with open(path) as f:
+        for line in f:
+            m = LINE.match(line)
+            if m:
+                cog, cyc, addr, ins, flag, text = m.groups()
+                cogs.setdefault(int(cog), []).append((int(cyc), int(addr, 16), ins, flag, text.strip()))
+    return cogs
+
+
+def bytecodes(events) -> list:
+    """One record per bytecode: ``dict(start, pc, op, tf, lines)``.
+
+    ``start`` is the cycle of the instruction at $008, ``tf`` the cycle of the
+    instruction at $00A (the fetch has completed), ``pc`` the opcode's address
+    (low 16 bits of pcurr).
+    """
+    out = []
+    cur = None
+    for ev in events:
+        cyc, addr, ins, flag, text = ev
+        if addr == 0x008 and ins == "a0fc0000" and flag == " ":
+            cur = {"start": cyc, "lines": []}
+            out.append(cur)
+        if cur is None:
+            continue
+        cur["lines"].append(ev)
+        if flag != " ":
+            continue
+        if addr == 0x009 and "op" not in cur:
+            cur["op"] = int(RVAL.search(text).group(1), 16)
+        elif addr == 0x00A and "pc" not in cur:
+            cur["pc"] = (int(RVAL.search(text).group(1), 16) - 1) & 0xFFFF
+            cur["tf"] = cyc
+    return [b for b in out if "tf" in b]
+
+
+def pin_writes(events, cog: int) -> list:
+    """``(cycle + 4, cog, register, value)`` for every executed write to OUTA ($1F4) or DIRA ($1F6)."""
+    out = []
+    for cyc, addr, ins, flag, text in events:
+        if flag != " ":
+            continue
+        word = int(ins, 16)
+        dest = (word >> 9) & 0x1FF
+        if dest in (0x1F4, 0x1F6):
+            m = RVAL.search(text)
+            if m:
+                out.append((cyc + 4, cog, dest, int(m.group(1), 16)))
+    return out
+
+
+def cog_starts(events) -> int:
+    """Cycle of a cog's first logged line."""
+    return events[0][0]
+
+
+def spinsim_available(path: str) -> bool:
+    return os.path.exists(path)
