@@ -398,7 +398,16 @@ class Chip:
                 next_report = self.now + 10_000_000
 
     def _run_spin(self, c: Cog, limit: int) -> None:
-        """Run cog ``c``'s bytecodes while it starts them before ``limit``. (Hot loop.)"""
+        """Run cog ``c``'s bytecodes while it starts them before ``limit``. (Hot loop.)
+
+        Hook for other engines: when ``c.engine`` is not a string but an
+        object, the scheduler hands the cog to ``c.engine.run(c, limit)``,
+        which must advance ``c.t`` (or stop the cog) the same way.  The
+        Spin->Python translation (spinemu.translate) runs its cogs this way.
+        """
+        if c.engine.__class__ is not str:
+            c.engine.run(c, limit)
+            return
         mem = self.mem
         H = self.handlers
         P = c.hub_phase
