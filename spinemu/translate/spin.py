@@ -1,0 +1,707 @@
+"""The library that translated Spin programs import: ``from spinemu.translate import spin``.
+
+Everything a translated module calls lives here, so that the generated code
+reads as ordinary Python:
+
+* values: Spin longs are kept as signed Python ints (-2**31 .. 2**31-1);
+  :func:`wrap` brings a result back into that range after ``+ - * <<``;
+  :data:`TRUE` is -1, as in Spin; :func:`div`, :func:`mod`, :func:`shr`,
+  :func:`rol`, ... are Spin's operators that Python spells differently
+  (Propeller Manual v1.2, "Operators");
+* memory: :class:`Object` (a Spin object instance) and the descriptors
+  :class:`Long`, :class:`Word`, :class:`Byte` put VAR and DAT variables in hub
+  RAM at the addresses the compiler gave them; :data:`long`, :data:`word`,
+  :data:`byte` are Spin's ``long[addr]``, ``word[addr]``, ``byte[addr]``;
+* the cog: :data:`cog` is the cog running the code (``cog.OUTA[7:4] = 5``,
+  ``cog.CNT``); :func:`waitcnt`, :func:`cognew`, :func:`cogstop`, ... hand
+  control to the chip's scheduler (spinemu.translate.runtime).
+
+Time: the runtime charges each statement the cycles of its bytecode
+(docs/translate.md); the helpers here add what depends on values (a
+division's loop, a wait) and put pin changes at the cycle the bytecode
+would.  Hot paths: the descriptors and :data:`cog`'s registers.
+"""
+from __future__ import annotations
+
+from ..chip import mathops as _m
+from ..chip.spin import random_forward as _rnd_fwd, random_reverse as _rnd_rev
+
+__all__ = [
+    "TRUE", "FALSE", "POSX", "NEGX", "wrap", "u32", "flag", "div", "mod", "shr", "rol", "ror", "rev",
+    "mul_high", "sqrt", "encode", "decode", "sign_extend_byte", "sign_extend_word",
+    "random_forward", "random_reverse", "within", "lookup", "lookupz", "lookdown", "lookdownz",
+    "Object", "Long", "Word", "Byte", "Child", "long", "word", "byte", "cog", "Abort", "trap",
+    "cognew", "coginit", "cogstop", "cogid", "waitcnt", "waitpeq", "waitpne", "clkfreq", "clkmode",
+    "clkset", "locknew", "lockret", "lockset", "lockclr", "strsize", "strcomp", "bytefill",
+    "wordfill", "longfill", "bytemove", "wordmove", "longmove", "string", "reboot", "repeat_step",
+]
+
+M32 = 0xFFFFFFFF
+TRUE, FALSE = -1, 0
+POSX, NEGX = 0x7FFFFFFF, -0x80000000
+
+
+class _State:
+    """What the running chip shares with this module (set by spinemu.translate.runtime)."""
+
+    __slots__ = ("cog", "limit", "engine", "chip", "T", "mem", "L", "Ls", "W", "pause")
+
+    def __init__(self):
+        self.cog = self.engine = self.chip = self.T = self.pause = None
+        self.limit = 0
+        self.mem = bytearray(0x10000)
+        self._views()
+
+    def _views(self):
+        v = memoryview(self.mem)
+        self.L, self.Ls, self.W = v.cast("I"), v.cast("i"), v.cast("H")
+
+    def attach(self, mem: bytearray) -> None:
+        self.mem = mem
+        self._views()
+
+
+RT = _State()
+
+
+# ----------------------------------------------------------------------------- values
+def wrap(v: int) -> int:
+    """``v`` as a Spin long: the low 32 bits, signed.
+
+    >>> wrap(0x7FFFFFFF + 1), wrap(-1), wrap(2**32 + 5)
+    (-2147483648, -1, 5)
+    """
+    return ((v + 0x80000000) & M32) - 0x80000000
+
+
+def u32(v: int) -> int:
+    """The unsigned 32-bit pattern of ``v`` (``repeat n`` counts this many times)."""
+    return v & M32
+
+
+def flag(condition) -> int:
+    """Spin's truth value: TRUE (-1) or FALSE (0)."""
+    return -1 if condition else 0
+
+
+def _delta(op: int, x: int, y: int) -> None:
+    """Charge the cycles a value-dependent math loop takes beyond the reference the statement paid."""
+    T = RT.T
+    if T is not None and RT.cog is not None:
+        table = T._math[op & 0x1F]
+        RT.cog.t += table[_mparam(op, x & M32, y & M32)] - table[_MREF.get(op, 0)]
+
+
+from ..chip.timing import MATH_REF as _MREF, math_param as _mparam  # noqa: E402
+
+
+def div(a: int, b: int) -> int:
+    """Spin ``a / b``: signed, rounded toward zero; dividing by zero gives 0."""
+    _delta(0xF6, a, b)
+    return wrap(_m.div(a & M32, b & M32))
+
+
+def mod(a: int, b: int) -> int:
+    """Spin ``a // b``: the remainder, with the sign of ``a``; modulo zero gives 0."""
+    _delta(0xF7, a, b)
+    return wrap(_m.mod(a & M32, b & M32))
+
+
+def shr(a: int, n: int) -> int:
+    """Spin ``a >> n``: logical shift right (zeros come in)."""
+    return wrap((a & M32) >> (n & 31))
+
+
+def rol(a: int, n: int) -> int:
+    """Spin ``a <- n``: rotate left."""
+    return wrap(_m.rol(a & M32, n & M32))
+
+
+def ror(a: int, n: int) -> int:
+    """Spin ``a -> n``: rotate right."""
+    return wrap(_m.ror(a & M32, n & M32))
+
+
+def rev(a: int, n: int) -> int:
+    """Spin ``a >< n``: the low ``n`` bits of ``a`` in reverse order."""
+    return wrap(_m.rev(a & M32, n & M32))
+
+
+def mul_high(a: int, b: int) -> int:
+    """Spin ``a ** b``: the upper 32 bits of the 64-bit product."""
+    return wrap(_m.mul_high(a & M32, b & M32))
+
+
+def sqrt(a: int) -> int:
+    """Spin ``^^a``: integer square root of the unsigned value."""
+    return _m.sqrt(a & M32)
+
+
+def encode(a: int) -> int:
+    """Spin ``>|a``: 1 + the number of the highest set bit (0 for 0)."""
+    _delta(0xF1, a, 0)
+    return _m.encode(a & M32)
+
+
+def decode(n: int) -> int:
+    """Spin ``|<n``: a long with bit ``n`` set."""
+    return wrap(1 << (n & 31))
+
+
+def sign_extend_byte(v: int) -> int:
+    """Spin ``~x``: bit 7 copied to bits 8..31."""
+    v &= 0xFF
+    return v - 0x100 if v & 0x80 else v
+
+
+def sign_extend_word(v: int) -> int:
+    """Spin ``~~x``: bit 15 copied to bits 16..31."""
+    v &= 0xFFFF
+    return v - 0x10000 if v & 0x8000 else v
+
+
+def random_forward(v: int) -> int:
+    """Spin ``?x``: the next value of the ROM's pseudo-random generator."""
+    return wrap(_rnd_fwd(v & M32))
+
+
+def random_reverse(v: int) -> int:
+    """Spin ``x?``: the previous value of the ROM's pseudo-random generator."""
+    return wrap(_rnd_rev(v & M32))
+
+
+def within(v: int, low: int, high: int) -> bool:
+    """Is ``v`` in the Spin range ``low..high`` (either order)?"""
+    return low <= v <= high if low <= high else high <= v <= low
+
+
+def repeat_step(x: int, start: int, stop: int, step: int = 1) -> tuple:
+    """One step of ``repeat x from start to stop step s``: ``(next x, loop again?)``."""
+    if start <= stop:
+        x += step
+        return wrap(x), start <= x <= stop
+    x -= step
+    return wrap(x), stop <= x <= start
+
+
+def _look(index: int, items, base: int) -> int:
+    i = index - base
+    for item in items:
+        if isinstance(item, range):
+            if 0 <= i < len(item):
+                return item[i]
+            i -= len(item)
+        else:
+            if i == 0:
+                return item
+            i -= 1
+    return 0
+
+
+def lookup(index: int, items) -> int:
+    """Spin ``lookup(i: a, b, c)``: item ``i`` counting from 1, or 0."""
+    return _look(index, items, 1)
+
+
+def lookupz(index: int, items) -> int:
+    """Spin ``lookupz(i: a, b, c)``: item ``i`` counting from 0, or 0."""
+    return _look(index, items, 0)
+
+
+def _find(value: int, items, base: int) -> int:
+    n = base
+    for item in items:
+        if isinstance(item, range):
+            if value in item:
+                return n + item.index(value)
+            n += len(item)
+        else:
+            if value == item:
+                return n
+            n += 1
+    return 0
+
+
+def lookdown(value: int, items) -> int:
+    """Spin ``lookdown(v: a, b, c)``: the position of ``v`` counting from 1, or 0."""
+    return _find(value, items, 1)
+
+
+def lookdownz(value: int, items) -> int:
+    """Spin ``lookdownz(v: a, b, c)``: the position of ``v`` counting from 0, or 0."""
+    return _find(value, items, 0)
+
+
+def span(low: int, high: int) -> range:
+    """The Spin range ``low..high`` as a Python range, in Spin's order."""
+    return range(low, high + 1) if low <= high else range(low, high - 1, -1)
+
+
+# ----------------------------------------------------------------------------- hub memory
+class _Memory:
+    """``long[addr]``, ``word[addr]``, ``byte[addr]`` (``[base, index]`` for Spin's ``long[base][index]``)."""
+
+    __slots__ = ("size", "name")
+
+    def __init__(self, size: int, name: str):
+        self.size = size
+        self.name = name
+
+    def _addr(self, key) -> int:
+        if isinstance(key, tuple):
+            base, index = key
+            return (base + index * self.size) & 0xFFFF
+        return key & 0xFFFF
+
+    def __getitem__(self, key) -> int:
+        a = self._addr(key)
+        if self.size == 4:
+            return RT.Ls[a >> 2]
+        if self.size == 2:
+            return RT.W[a >> 1]
+        return RT.mem[a]
+
+    def __setitem__(self, key, value: int) -> None:
+        a = self._addr(key)
+        if a >= 0x8000:
+            return
+        if self.size == 4:
+            RT.L[a >> 2] = value & M32
+        elif self.size == 2:
+            RT.W[a >> 1] = value & 0xFFFF
+        else:
+            RT.mem[a] = value & 0xFF
+
+    def __repr__(self) -> str:
+        return f"spin.{self.name}"
+
+
+long, word, byte = _Memory(4, "long"), _Memory(2, "word"), _Memory(1, "byte")
+
+
+class _Array:
+    """Elements of a VAR/DAT variable (indexable like Spin's ``name[i]``; ``.addr`` is ``@name``)."""
+
+    __slots__ = ("addr", "mem")
+
+    def __init__(self, addr: int, mem: _Memory):
+        self.addr = addr
+        self.mem = mem
+
+    def __getitem__(self, i: int) -> int:
+        return self.mem[self.addr + i * self.mem.size]
+
+    def __setitem__(self, i: int, value: int) -> None:
+        self.mem[self.addr + i * self.mem.size] = value
+
+
+class _Var:
+    """A VAR (``base="var"``) or DAT (``base="dat"``) variable of a Spin object, kept in hub RAM."""
+
+    __slots__ = ("offset", "count", "dat", "name")
+    size = 4
+    mem = long
+
+    def __init__(self, offset: int, count: int = 1, *, dat: bool = False):
+        self.offset = offset
+        self.count = count
+        self.dat = dat
+
+    def __set_name__(self, owner, name):
+        self.name = name
+
+    def address(self, obj) -> int:
+        return (obj._pbase if self.dat else obj._vbase) + self.offset
+
+    def __get__(self, obj, owner=None):
+        if obj is None:
+            return self
+        a = (obj._pbase if self.dat else obj._vbase) + self.offset
+        if self.count != 1:
+            return _Array(a, self.mem)
+        return self._read(a)
+
+    def __set__(self, obj, value: int) -> None:
+        a = (obj._pbase if self.dat else obj._vbase) + self.offset
+        if a < 0x8000:
+            self._write(a, value)
+
+
+class Long(_Var):
+    """A long variable (or array of ``count`` longs) at ``offset`` in the object's VAR (or DAT) block."""
+
+    __slots__ = ()
+
+    @staticmethod
+    def _read(a):
+        return RT.Ls[a >> 2]
+
+    @staticmethod
+    def _write(a, v):
+        RT.L[a >> 2] = v & M32
+
+
+class Word(_Var):
+    """A word variable (16 bits, read as 0..65535)."""
+
+    __slots__ = ()
+    size = 2
+    mem = word
+
+    @staticmethod
+    def _read(a):
+        return RT.W[a >> 1]
+
+    @staticmethod
+    def _write(a, v):
+        RT.W[a >> 1] = v & 0xFFFF
+
+
+class Byte(_Var):
+    """A byte variable (8 bits, read as 0..255)."""
+
+    __slots__ = ()
+    size = 1
+    mem = byte
+
+    @staticmethod
+    def _read(a):
+        return RT.mem[a]
+
+    @staticmethod
+    def _write(a, v):
+        RT.mem[a] = v & 0xFF
+
+
+class Child:
+    """An OBJ line: ``motor = spin.Child(Stepper)`` (``count`` > 1: a list of instances)."""
+
+    __slots__ = ("cls", "count", "name")
+
+    def __init__(self, cls, count: int = 1):
+        self.cls = cls
+        self.count = count
+
+    def __set_name__(self, owner, name):
+        self.name = name
+
+
+class Object:
+    """A Spin object instance: its code (``_pbase``) and VAR block (``_vbase``) in hub RAM.
+
+    Instances are made by the runtime from the compiler's layout
+    (:func:`spinemu.translate.runtime.instantiate`), so that every variable
+    sits at the address the compiled image gives it.
+    """
+
+    _pbase = 0
+    _vbase = 0
+
+    def at(self, name: str, index: int = 0, size: int = 0) -> _Array:
+        """The variable ``name`` seen as an array (Spin's ``name[i]`` on any variable, ``name.byte[i]``)."""
+        var = getattr(type(self), name)
+        mem = {1: byte, 2: word, 4: long}[size] if size else var.mem
+        return _Array(var.address(self) + index * var.mem.size, mem)
+
+    def addr(self, name: str, index: int = 0) -> int:
+        """Spin's ``@name`` (``@name[index]``): the hub address of a VAR or DAT variable."""
+        var = getattr(type(self), name)
+        return var.address(self) + index * var.mem.size
+
+    def object_base(self) -> int:
+        """The hub address of this object (what Spin's ``@@`` adds)."""
+        return self._pbase
+
+
+# ----------------------------------------------------------------------------- abort
+class Abort(Exception):
+    """Spin's ``abort value``: unwinds to the nearest ``\\call`` (:func:`trap`)."""
+
+    def __init__(self, value: int = 0):
+        super().__init__(value)
+        self.value = value
+
+
+def trap(method, *args) -> int:
+    """Spin's ``\\method(args)``: the method's result, or the value of an ``abort`` inside it."""
+    try:
+        return method(*args)
+    except Abort as stop:
+        return stop.value
+
+
+# ----------------------------------------------------------------------------- cog registers
+_REG = {"PAR": 0x1F0, "CNT": 0x1F1, "INA": 0x1F2, "INB": 0x1F3, "OUTA": 0x1F4, "OUTB": 0x1F5,
+        "DIRA": 0x1F6, "DIRB": 0x1F7, "CTRA": 0x1F8, "CTRB": 0x1F9, "FRQA": 0x1FA, "FRQB": 0x1FB,
+        "PHSA": 0x1FC, "PHSB": 0x1FD, "VCFG": 0x1FE, "VSCL": 0x1FF}
+
+
+def _fetched() -> int:
+    """The cycle at which the current cog's next bytecode has been fetched (on its hub window)."""
+    c = RT.cog
+    t = c.t + 12
+    return t + ((c.hub_phase - t) & 15)
+
+
+def _read(reg: int, op: int) -> int:
+    c = RT.cog
+    return RT.chip.registers.read(c, reg, _fetched() + RT.T.reg_read_at[(op, 0)])
+
+
+def _write(reg: int, value: int) -> None:
+    # the statement already paid for the writing bytecode: its last instruction writes
+    c = RT.cog
+    RT.chip.registers.write(c, reg, value & M32, c.t - 4)
+
+
+def _field(key):
+    """``(low bit, width, reversed)`` of a register index: a bit ``[n]`` or a range ``[hi:lo]``."""
+    if isinstance(key, slice):
+        a, b = key.start & 31, key.stop & 31
+        rev = a < b
+        lo, hi = (a, b) if rev else (b, a)
+        return lo, hi - lo + 1, rev
+    return key & 31, 1, False
+
+
+def _reverse(v: int, width: int) -> int:
+    r = 0
+    for _ in range(width):
+        r = (r << 1) | (v & 1)
+        v >>= 1
+    return r
+
+
+class Register(int):
+    """A register's value (an int) that also writes bit fields back: ``cog.OUTA[7:4] = %1001``."""
+
+    __slots__ = ()
+    reg = 0
+
+    def __getitem__(self, key) -> int:
+        lo, width, rev = _field(key)
+        v = (_read(self.reg, 0x3E if isinstance(key, slice) else 0x3D) >> lo) & ((1 << width) - 1)
+        return wrap(_reverse(v, width) if rev else v)
+
+    def __setitem__(self, key, value: int) -> None:
+        lo, width, rev = _field(key)
+        field = (1 << width) - 1
+        value &= field
+        if rev:
+            value = _reverse(value, width)
+        old = RT.chip.registers.read(RT.cog, self.reg, RT.cog.t)
+        _write(self.reg, (old & ~(field << lo)) | (value << lo))
+
+
+def _register_class(name: str, reg: int):
+    return type(name, (Register,), {"__slots__": (), "reg": reg})
+
+
+_REG_CLASSES = {name: _register_class(name, reg) for name, reg in _REG.items()}
+
+
+def _reg_property(name: str):
+    reg, cls = _REG[name], _REG_CLASSES[name]
+
+    def get(self):
+        return cls(wrap(_read(reg, 0x3F)))
+
+    def set(self, value):
+        _write(reg, value)
+
+    return property(get, set, doc=f"{name} of the cog running this code")
+
+
+class _Cog:
+    """The cog that runs the current code: its registers (``OUTA``, ``DIRA``, ``INA``, ``CNT``, ...).
+
+    ``cog.OUTA[n]`` is bit ``n``, ``cog.OUTA[hi:lo]`` the bits ``hi..lo`` (Spin's
+    ``outa[hi..lo]``; ``[lo:hi]`` reverses them, as in Spin).
+    """
+
+    __slots__ = ()
+    for _name in _REG:
+        locals()[_name] = _reg_property(_name)
+    del _name
+
+    @property
+    def spr(self):
+        """Spin's ``spr[i]``: special register ``$1F0 + i``."""
+        return _Spr()
+
+    def __repr__(self) -> str:
+        return "<the cog running this code>"
+
+
+class _Spr:
+    __slots__ = ()
+
+    def __getitem__(self, i: int) -> int:
+        return wrap(RT.chip.registers.read(RT.cog, 0x1F0 + (i & 15), _fetched() + RT.T.spr_read_at))
+
+    def __setitem__(self, i: int, value: int) -> None:
+        _write(0x1F0 + (i & 15), value)
+
+
+cog = _Cog()
+
+
+# ----------------------------------------------------------------------------- cog control, waits
+def cogid() -> int:
+    """The number of the cog running this code."""
+    return RT.cog.id
+
+
+def clkfreq() -> int:
+    """The system clock frequency in Hz (``long[0]``)."""
+    return RT.Ls[0]
+
+
+def clkmode() -> int:
+    """The clock mode byte (``byte[4]``)."""
+    return RT.mem[4]
+
+
+def waitcnt(target: int) -> None:
+    """Wait until the system counter equals ``target`` (a full 2**32-cycle turn if it just passed)."""
+    RT.engine.waitcnt(target)
+
+
+def waitpeq(state: int, mask: int, port: int = 0) -> None:
+    """Wait until ``INA & mask == state``."""
+    RT.engine.wait_pins(state, mask, True)
+
+
+def waitpne(state: int, mask: int, port: int = 0) -> None:
+    """Wait until ``INA & mask != state``."""
+    RT.engine.wait_pins(state, mask, False)
+
+
+def cognew(method, *args, stack: int) -> int:
+    """Start ``method(*args)`` in a free cog with its stack at hub address ``stack``; the cog's id or -1.
+
+    ``method`` may also be a hub address (PASM code, Spin's ``cognew(@entry, par)``):
+    then ``args`` holds the PAR value.
+    """
+    return RT.engine.coginit(8, method, args, stack)
+
+
+def coginit(cog_id: int, method, *args, stack: int) -> int:
+    """Start ``method(*args)`` in cog ``cog_id`` (restarting it if it runs)."""
+    return RT.engine.coginit(cog_id & 7, method, args, stack)
+
+
+def cogstop(cog_id: int) -> None:
+    """Stop cog ``cog_id``."""
+    RT.engine.cogstop(cog_id & 7)
+
+
+def reboot() -> None:
+    """Restart the chip."""
+    RT.engine.reboot()
+
+
+def clkset(mode: int, freq: int) -> None:
+    """Set the clock mode and frequency (stored in hub RAM, as Spin does)."""
+    RT.L[0] = freq & M32
+    RT.mem[4] = mode & 0xFF
+    if mode & 0x80:
+        reboot()
+    RT.chip.set_clock(mode & 0xFF, freq & M32)
+
+
+def locknew() -> int:
+    """Check out a free lock: its id, or -1."""
+    return wrap(RT.chip.locknew())
+
+
+def lockret(lock: int) -> None:
+    RT.chip.lockret(lock & 7)
+
+
+def lockset(lock: int) -> int:
+    """Set lock ``lock``; TRUE if it was already set."""
+    return flag(RT.chip.lockset(lock & 7, True))
+
+
+def lockclr(lock: int) -> int:
+    """Clear lock ``lock``; TRUE if it was set."""
+    return flag(RT.chip.lockset(lock & 7, False))
+
+
+# ----------------------------------------------------------------------------- strings and blocks
+def strsize(addr: int) -> int:
+    """Length of the zero-terminated string at ``addr``."""
+    mem = RT.mem
+    n = 0
+    while mem[(addr + n) & 0xFFFF]:
+        n += 1
+    if RT.T is not None:
+        RT.cog.t += RT.T.strsize(n) - RT.T.strsize(0)
+    return n
+
+
+def strcomp(a: int, b: int) -> int:
+    """TRUE if the zero-terminated strings at ``a`` and ``b`` are equal."""
+    mem = RT.mem
+    n = 0
+    while True:
+        x, y = mem[(a + n) & 0xFFFF], mem[(b + n) & 0xFFFF]
+        n += 1
+        if x != y or x == 0:
+            break
+    if RT.T is not None:
+        RT.cog.t += RT.T.strcomp(n, x == y) - RT.T.strcomp(1, False)
+    return flag(x == y)
+
+
+def string(address: int) -> int:
+    """Spin's ``string("...")``: the address of the string kept with the method's code."""
+    return address
+
+
+def _fill(size: int, addr: int, value: int, count: int) -> None:
+    mem = (byte, word, long)[size]
+    step = 1 << size
+    for i in range(count & M32 if count & M32 < 0x10000 else 0x10000):
+        mem[addr + i * step] = value
+    if RT.T is not None:
+        RT.cog.t += RT.T.fill(size, count & M32) - RT.T.fill(size, 0)
+
+
+def _move(size: int, dst: int, src: int, count: int) -> None:
+    mem = (byte, word, long)[size]
+    step = 1 << size
+    n = count & M32 if count & M32 < 0x10000 else 0x10000
+    align = ~(step - 1)
+    order = range(n) if (dst & 0xFFFF & align) <= (src & 0xFFFF & align) else range(n - 1, -1, -1)
+    for i in order:
+        mem[dst + i * step] = mem[src + i * step]
+    if RT.T is not None:
+        RT.cog.t += RT.T.move(size, count & M32) - RT.T.move(size, 0)
+
+
+def bytefill(addr: int, value: int, count: int) -> None:
+    """Set ``count`` bytes from ``addr`` on to ``value``."""
+    _fill(0, addr, value, count)
+
+
+def wordfill(addr: int, value: int, count: int) -> None:
+    _fill(1, addr, value, count)
+
+
+def longfill(addr: int, value: int, count: int) -> None:
+    _fill(2, addr, value, count)
+
+
+def bytemove(dst: int, src: int, count: int) -> None:
+    """Copy ``count`` bytes from ``src`` to ``dst``."""
+    _move(0, dst, src, count)
+
+
+def wordmove(dst: int, src: int, count: int) -> None:
+    _move(1, dst, src, count)
+
+
+def longmove(dst: int, src: int, count: int) -> None:
+    _move(2, dst, src, count)

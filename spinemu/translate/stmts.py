@@ -1,0 +1,647 @@
+"""Spin statements as Python statements, and what each costs.
+
+One :class:`MethodTranslator` per method writes the method's lines into a
+:class:`~spinemu.translate.code.Code` and records, for the Python lines it
+writes, the cycles the weaver (weave.py) charges before or after them:
+
+==========================  =============================================  ==========================
+Spin                        Python                                         charged
+==========================  =============================================  ==========================
+``if c`` / ``elseif``       ``if c:`` / ``elif c:`` / ``else:``            condition + JZ before it;
+                                                                           JMP after the branch
+``case v``                  ``if v == 1: ... elif v in (2, 3): ...``       compares per branch, CASE_DONE
+``repeat``                  ``while True:``                                JMP after the body
+``repeat n``                ``for _ in range(n):``                         n + TJZ; DJNZ per pass
+``repeat while c``          ``while c:``                                   c + JZ per pass; JMP
+``repeat ... until c``      ``while True: ...; if c: break``               c + JZ per pass
+``repeat x from a to b``    ``for x in range(a, b + 1):`` (constant        REPEAT per pass
+                            bounds) or a ``while True`` with
+                            ``spin.repeat_step``
+``next`` / ``quit``         ``continue`` / ``break``                       the jump (and case pops)
+``abort v`` / ``\\f(x)``    ``raise spin.Abort(v)`` / ``spin.trap(f, x)``
+==========================  =============================================  ==========================
+
+Costs come from the compiler's own bytecode for each piece (costs.py).
+"""
+from __future__ import annotations
+
+from ..compiler.code import CodeBuffer, Label
+from ..compiler.exprs import USING, push_const_bytes
+from ..compiler import stmts as cstmts
+from ..frontend import ast as A
+from ..frontend.ast import key
+from .costs import Op, price, jump_op, split
+from .exprs import ExprTranslator, X
+
+__all__ = ["MethodTranslator"]
+
+_PY_AUG = {"+", "-", "*", "&", "|", "^"}
+
+
+class _LoopInfo:
+    def __init__(self, kind, next_ops=(), quit_op="JMP"):
+        self.kind = kind
+        self.next_ops = list(next_ops)
+        self.quit_op = quit_op
+        self.cases = 0
+
+
+class MethodTranslator(ExprTranslator):
+    """Translates one Spin method (see the module docstring).
+
+    Args:
+        objt: the object translator (program.py): names, symbols, the compiler's object.
+        method: the ``ast.Method``.
+        code: where the lines go.
+    """
+
+    def __init__(self, objt, method, code):
+        self.objt = objt
+        self.obj = objt.oc
+        self.names = objt.names
+        self.method = method
+        self.code = code
+        self.T = objt.timing
+        self.mc = cstmts.MethodCompiler(self.obj, method)
+        self.frame = self.mc.frame
+        self.result_name = self.names.local(method.result or "result")
+        self.hoisted: list = []
+        self.loops: list = []
+        self.temps: set = set()
+        self.path = method.pos.path
+
+    # ------------------------------------------------------------------ helpers for exprs.py
+    def unsupported(self, what: str, node):
+        self.objt.unsupported(what, node)
+
+    def lookup(self, name: str, node):
+        k = key(name)
+        if k in self.frame:
+            return "local", self.frame[k]
+        return self.objt.lookup(name, node)
+
+    def temp(self, prefix: str) -> str:
+        base = self.names.temp_base(prefix)
+        name, n = base, 1
+        while name in self.temps:
+            n += 1
+            name = f"{base}{n}"
+        self.temps.add(name)
+        return name
+
+    # ------------------------------------------------------------------ costs
+    def piece(self, fn, loop_count: bool = False, **kw) -> list:
+        """Price the bytecode the compiler makes for ``fn()`` (a statement or expression)."""
+        mc = self.mc
+        saved = mc.code, mc.loops
+        mc.code = CodeBuffer()
+        nxt, end = Label(), Label()
+        mc.loops = [cstmts._Loop(nxt, end, count=loop_count)]
+        try:
+            fn()
+            mc.code.mark(nxt)
+            mc.code.mark(end)
+            spans, _ = mc.code.layout(0)
+        finally:
+            mc.code, mc.loops = saved
+        data = b"".join(s.data for s in spans if s.note != "string")
+        return price(self.T, data, **kw)
+
+    def size(self, fn) -> int:
+        mc = self.mc
+        saved = mc.code, mc.loops
+        mc.code = CodeBuffer()
+        nxt, end = Label(), Label()
+        mc.loops = [cstmts._Loop(nxt, end)]
+        try:
+            fn()
+            mc.code.mark(nxt)
+            mc.code.mark(end)
+            _, n = mc.code.layout(0)
+        finally:
+            mc.code, mc.loops = saved
+        return n
+
+    def body_size(self, stmts) -> int:
+        return self.size(lambda: self.mc.block(stmts))
+
+    def expr_ops(self, node) -> list:
+        return self.piece(lambda: self.mc.expr(node))
+
+    def charge(self, line: int, slot: str, ops) -> None:
+        if line is not None and ops:
+            self.code.charge(line, slot, list(ops))
+
+    def charge_add(self, line: int, slot: str, cycles: int) -> None:
+        if line is not None and cycles:
+            self.code.charge_add(line, slot, cycles)
+
+    # ------------------------------------------------------------------ emitting
+    def emit(self, text: str, node=None) -> int:
+        return self.code.line(text, node.pos.line if node is not None else None)
+
+    def block(self, stmts) -> tuple:
+        """Emit a body (indented); ``(first line, last statement line)``."""
+        self.code.indent += 1
+        first = last = None
+        try:
+            if not stmts:
+                first = last = self.emit("pass")
+            for st in stmts:
+                f, last = self.statement(st)
+                first = first or f
+        finally:
+            self.code.indent -= 1
+        return first, last
+
+    def statement(self, st) -> tuple:
+        self.code.comments_before(st.pos.line)
+        method = getattr(self, "s_" + type(st).__name__)
+        return method(st)
+
+    def flush(self, main, node) -> tuple:
+        """Emit the hoisted lines and ``main`` (a line or None); ``(first, last)``."""
+        lines = self.hoisted + ([main] if main else [])
+        self.hoisted = []
+        first = last = None
+        for text in lines:
+            last = self.emit(text, node)
+            first = first or last
+        if first is None:
+            first = last = self.emit("pass", node)
+        return first, last
+
+    # ------------------------------------------------------------------ simple statements
+    def s_ExprStmt(self, st) -> tuple:
+        e = st.expr
+        t = type(e)
+        main = None
+        if t is A.Assign:
+            self.assign(e)
+        elif t is A.PreOp:
+            self.step(e.target, e.op)
+        elif t is A.PostOp:
+            self.step(e.target, e.op, post=True)
+        elif t is A.Unary and isinstance(e.operand, A.VARIABLE_NODES) and self.constant(e) is None:
+            self.unary_assign(e)
+        else:
+            main = self.expr(e).text
+        ops = self.piece(lambda: self.mc.block([st]))
+        pre, post = split(ops)
+        first, last = self.flush(main, st)
+        self.charge(first, "b", pre)
+        self.charge(last, "a", post)
+        return first, last
+
+    def s_Return(self, st) -> tuple:
+        if st.value is None:
+            main = f"return {self.result_name}" if self.objt.uses_result(self.method) else "return"
+        else:
+            main = f"return {self.value(st.value)}"
+        return self.ending(st, main)
+
+    def s_Abort(self, st) -> tuple:
+        value = self.value(st.value) if st.value is not None else (
+            self.result_name if self.objt.uses_result(self.method) else "0")
+        return self.ending(st, f"raise spin.Abort({value})")
+
+    def ending(self, st, main) -> tuple:
+        ops = self.piece(lambda: self.mc.block([st]))
+        first, last = self.flush(main, st)
+        self.charge(first, "b", ops)
+        return first, last
+
+    def s_Next(self, st) -> tuple:
+        loop = self.loop_of(st, "next")
+        if loop.kind in ("post", "general"):
+            self.unsupported("'next' in this kind of repeat loop", st)
+        ops = self.case_pops(loop) + [jump_op(self.T, "JMP")] + loop.next_ops
+        line = self.emit("continue", st)
+        self.charge(line, "b", ops)
+        return line, line
+
+    def s_Quit(self, st) -> tuple:
+        loop = self.loop_of(st, "quit")
+        ops = self.case_pops(loop) + [jump_op(self.T, loop.quit_op, taken=True)]
+        line = self.emit("break", st)
+        self.charge(line, "b", ops)
+        return line, line
+
+    def loop_of(self, st, word):
+        if not self.loops:
+            self.unsupported(f"'{word}' outside a repeat loop", st)
+        return self.loops[-1]
+
+    def case_pops(self, loop) -> list:
+        if not loop.cases:
+            return []
+        return price(self.T, push_const_bytes(8 * loop.cases) + b"\x14")
+
+    # ------------------------------------------------------------------ assignments
+    def assign(self, node) -> None:
+        target = node.target
+        mark = len(self.hoisted)
+        value = self.expr(node.value)
+        if node.op == ":=":
+            self.store(target, value, mark)
+            return
+        op = node.op.upper() if node.op.isalpha() else node.op
+        self.store_op(target, op, value, mark)
+
+    def target_text(self, target, value: X, mark: int):
+        """The target as an assignment target; saves ``value`` first if the target hoists code."""
+        before = len(self.hoisted)
+        text = self.expr(target).text
+        if len(self.hoisted) > before and value.const is None and not value.text.isidentifier():
+            tmp = self.temp("value")
+            self.hoisted.insert(mark, f"{tmp} = {value.text}")
+            value = X(tmp, wrapped=value.wrapped, boolean=value.boolean)
+        return text, value
+
+    def is_local(self, target) -> bool:
+        if isinstance(target, A.ResultRef):
+            return True
+        return isinstance(target, A.NameRef) and key(target.name) in self.frame
+
+    def store(self, target, value: X, mark: int) -> None:
+        text, value = self.target_text(target, value, mark)
+        if self.is_local(target):
+            self.hoisted.append(f"{text} = {self.wrapped(value).text}")
+        else:
+            v = self.wrapped(value).text if value.boolean else value.text
+            self.hoisted.append(f"{text} = {v}")
+
+    def store_op(self, target, op: str, value: X, mark: int) -> None:
+        text, value = self.target_text(target, value, mark)
+        local = self.is_local(target)
+        if op in _PY_AUG and not local and not value.boolean:
+            self.hoisted.append(f"{text} {op}= {value.paren(10)}")
+            return
+        new = self.binop(op, X(text), value)
+        self.hoisted.append(f"{text} = {(self.wrapped(new) if local or new.boolean else new).text}")
+
+    def binop(self, op: str, left: X, right: X) -> X:
+        """``left OP right`` for already translated operands (assignment operators)."""
+        return self.x_Binary(A.Binary(None, op, _Given(None, left), _Given(None, right)))
+
+    def step(self, target, op: str, post: bool = False) -> None:
+        text, _ = self.target_text(target, X("0"), len(self.hoisted))
+        local = self.is_local(target)
+        if op in ("++", "--"):
+            sign = "+" if op == "++" else "-"
+            self.hoisted.append(f"{text} = wrap({text} {sign} 1)" if local else f"{text} {sign}= 1")
+        elif op == "~":
+            self.hoisted.append(f"{text} = 0" if post else f"{text} = spin.sign_extend_byte({text})")
+        elif op == "~~":
+            self.hoisted.append(f"{text} = -1" if post else f"{text} = spin.sign_extend_word({text})")
+        elif op == "?":
+            fn = "random_reverse" if post else "random_forward"
+            self.hoisted.append(f"{text} = spin.{fn}({text})")
+        else:
+            self.unsupported(f"the operator {op}", target)
+
+    def unary_assign(self, e) -> None:
+        """``-x``, ``!x``, ``||x`` ... written as a statement: Spin changes ``x`` in place."""
+        text, _ = self.target_text(e.operand, X("0"), len(self.hoisted))
+        new = self.wrapped(self.x_Unary(A.Unary(e.pos, e.op, _Given(e.pos, X(text)))))
+        self.hoisted.append(f"{text} = {new.text}")
+
+    def x__Given(self, node) -> X:
+        return node.x
+
+    # ------------------------------------------------------------------ builtins
+    def x_Builtin(self, node) -> X:
+        name = node.name.lower()
+        args = node.args or []
+        if name in ("constant", "float", "round", "trunc"):
+            v = self.constant(node)
+            return X(str(v), 14 if v >= 0 else 11, const=v)
+        if name == "string":
+            offset = self.objt.string_offset(self.method, node)
+            text = "".join(a.text if isinstance(a, A.Str) else "" for a in args)
+            return X(f"self.string(0x{offset:04X}, {text!r})" if text else f"self.string(0x{offset:04X})")
+        if name in ("cognew", "coginit"):
+            return self.cog_start(node, name, args)
+        simple = ("waitcnt", "waitpeq", "waitpne", "cogstop", "lockret", "lockset", "lockclr", "strsize",
+                  "strcomp", "bytefill", "wordfill", "longfill", "bytemove", "wordmove", "longmove",
+                  "clkset", "waitvid")
+        if name == "waitvid":
+            self.unsupported("waitvid (video)", node)
+        if name in simple:
+            return X(f"spin.{name}({', '.join(self.value(a) for a in args)})")
+        if name in ("locknew", "cogid", "clkfreq", "clkmode", "reboot"):
+            return X(f"spin.{name}()")
+        if name == "chipver":
+            return X("spin.byte[-1]")
+        self.unsupported(f"the built-in {node.name}", node)
+
+    def cog_start(self, node, name, args) -> X:
+        new = name == "cognew"
+        first = args[0] if new else args[1]
+        rest = args[1] if new else args[2]
+        target = first.expr if isinstance(first, A.Paren) else first
+        head = "" if new else f"{self.value(args[0])}, "
+        if isinstance(target, (A.Call, A.NameRef)) and self.lookup(target.name, target)[0] == "method":
+            call_args = target.args if isinstance(target, A.Call) else []
+            params = "".join(f", {self.value(a)}" for a in call_args)
+            return X(f"spin.{name}({head}self.{self.names.attr(target.name)}{params}, stack={self.value(rest)})")
+        return X(f"spin.{name}({head}{self.value(first)}, {self.value(rest)}, stack=0)")
+
+    # ------------------------------------------------------------------ if
+    def s_If(self, st) -> tuple:
+        first = None
+        last = len(st.branches) - 1
+        closers = 0
+        for i, br in enumerate(st.branches):
+            c = self.cond(br.cond)
+            if br.negate:
+                c = f"not ({c})" if " " in c else f"not {c}"
+            hoisted = self.hoisted
+            self.hoisted = []
+            if hoisted and i > 0:
+                self.emit("else:", br)
+                self.code.indent += 1
+                closers += 1
+            branch_first = None
+            for h in hoisted:
+                ln = self.emit(h, br)
+                branch_first = branch_first or ln
+            word = "if" if i == 0 or hoisted else "elif"
+            header = self.emit(f"{word} {c}:", br)
+            branch_first = branch_first or header
+            first = first or branch_first
+            body_size = self.body_size(br.body)
+            j = "JNZ" if br.negate else "JZ"
+            ops = self.expr_ops(br.cond) + [jump_op(self.T, j, body_size + 3 > 63, taken=False)]
+            self.charge(branch_first, "b", ops)
+            _, body_last = self.block(br.body)
+            if i < last or st.else_body is not None:
+                self.charge(body_last, "a", [jump_op(self.T, "JMP", False)])
+        if st.else_body is not None:
+            self.code.comments_before(st.else_pos.line if st.else_pos else st.pos.line)
+            self.code.line("else:", st.else_pos.line if st.else_pos else None)
+            self.block(st.else_body)
+        self.code.indent -= closers
+        return first, first
+
+    # ------------------------------------------------------------------ case
+    def s_Case(self, st) -> tuple:
+        sel_x = self.expr(st.value)
+        sel = self.wrapped(sel_x).text
+        pre_lines = list(self.hoisted)
+        self.hoisted = []
+        if not (sel.isidentifier() or sel.startswith("self.") and sel[5:].isidentifier()):
+            tmp = self.temp("selector")
+            pre_lines.append(f"{tmp} = {sel}")
+            sel = tmp
+        first = None
+        for text in pre_lines:
+            ln = self.emit(text, st)
+            first = first or ln
+        imm = 1 if self.objt.method_end(self.method) < 0x100 else 2
+        head = [Op(0x37 + imm, self.T.push_imm[imm])] + self.expr_ops(st.value)
+        items = [it for it in st.items if it.values is not None]
+        other = next((it for it in st.items if it.values is None), None)
+        if self.loops:
+            self.loops[-1].cases += 1
+        header = None
+        try:
+            for n, item in enumerate(items):
+                conds, ops = [], []
+                for v in item.values:
+                    if isinstance(v, A.Range):
+                        lo, hi = self.value(v.low), self.value(v.high)
+                        clo, chi = self.constant(v.low), self.constant(v.high)
+                        if clo is not None and chi is not None and clo > chi:
+                            lo, hi = hi, lo
+                        if clo is not None and chi is not None:
+                            conds.append(f"{lo} <= {sel} <= {hi}")
+                        else:
+                            conds.append(f"spin.within({sel}, {lo}, {hi})")
+                        ops += self.expr_ops(v.low) + self.expr_ops(v.high) + [jump_op(self.T, "CASE_RANGE")]
+                    else:
+                        conds.append(f"{sel} == {self.value(v)}")
+                        ops += self.expr_ops(v) + [jump_op(self.T, "CASE_VALUE")]
+                if self.hoisted:
+                    self.unsupported("a case value with side effects", item)
+                if all(c.startswith(f"{sel} == ") for c in conds) and len(conds) > 1:
+                    cond = f"{sel} in ({', '.join(c[len(sel) + 4:] for c in conds)})"
+                else:
+                    cond = " or ".join(conds)
+                self.code.comments_before(item.pos.line)
+                header = self.emit(f"{'if' if n == 0 else 'elif'} {cond}:", item)
+                first = first or header
+                self.charge(header, "b", (head if n == 0 else []) + ops)
+                _, body_last = self.block(item.body)
+                self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
+            if other is not None:
+                self.code.comments_before(other.pos.line)
+                if items:
+                    self.code.line("else:", other.pos.line)
+                    _, body_last = self.block(other.body)
+                else:
+                    self.charge(self.emit("pass", other), "b", head)
+                    body_last = self.statement_list(other.body)
+                self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
+            elif header is not None:
+                self.charge(header, "e", [jump_op(self.T, "CASE_DONE")])
+        finally:
+            if self.loops:
+                self.loops[-1].cases -= 1
+        return first, first
+
+    def statement_list(self, stmts):
+        last = None
+        for s in stmts:
+            _, last = self.statement(s)
+        return last
+
+    # ------------------------------------------------------------------ repeat
+    def loop_block(self, body, info):
+        self.loops.append(info)
+        try:
+            return self.block(body)
+        finally:
+            self.loops.pop()
+
+    def s_RepeatForever(self, st) -> tuple:
+        line = self.emit("while True:", st)
+        size = self.body_size(st.body)
+        _, last = self.loop_block(st.body, _LoopInfo("forever"))
+        self.charge(last, "a", [jump_op(self.T, "JMP", size + 2 > 64)])
+        return line, line
+
+    def s_RepeatCount(self, st) -> tuple:
+        c = self.constant(st.count)
+        n = self.expr(st.count)
+        count = n.text if c is not None and c >= 0 else f"spin.u32({self.value(st.count)})"
+        if self.hoisted:
+            first, _ = self.flush(None, st)
+        else:
+            first = None
+        line = self.emit(f"for _ in range({count}):", st)
+        size = self.body_size(st.body)
+        long_back = size + 2 > 64
+        T = self.T
+        djnz_t, djnz_n = jump_op(T, "DJNZ", long_back, True), jump_op(T, "DJNZ", long_back, False)
+        self.charge(first or line, "b", self.expr_ops(st.count) + [jump_op(T, "TJZ", size + 3 > 63, False)])
+        info = _LoopInfo("count", next_ops=[djnz_t], quit_op="JNZ")
+        _, last = self.loop_block(st.body, info)
+        self.charge(last, "a", [djnz_t])
+        self.charge_add(line, "e", djnz_n.rest - djnz_t.rest)
+        return first or line, line
+
+    def s_RepeatWhile(self, st) -> tuple:
+        T = self.T
+        size = self.body_size(st.body)
+        cond_ops = self.expr_ops(st.cond)
+        if st.post:
+            j = "JZ" if st.until else "JNZ"          # jumps back to the top while the loop goes on
+            long_j = size + 3 > 64
+            line = self.emit("while True:", st)
+            _, last = self.loop_block(st.body, _LoopInfo("post"))
+            self.code.indent += 1
+            c = self.cond(st.cond)
+            test = c if st.until else (f"not ({c})" if " " in c else f"not {c}")
+            first, _ = self.flush(None, st.cond) if self.hoisted else (None, None)
+            iff = self.emit(f"if {test}:", st.cond)
+            self.charge(first or iff, "b", cond_ops + [jump_op(T, j, long_j, True)])
+            self.code.indent += 1
+            brk = self.emit("break", st.cond)
+            self.charge_add(brk, "b", jump_op(T, j, long_j, False).rest - jump_op(T, j, long_j, True).rest)
+            self.code.indent -= 2
+            return line, line
+        j = "JNZ" if st.until else "JZ"
+        c = self.cond(st.cond)
+        test = (f"not ({c})" if " " in c else f"not {c}") if st.until else c
+        jz_not = jump_op(T, j, size + 3 > 63, False)
+        jz_taken = jump_op(T, j, size + 3 > 63, True)
+        back = jump_op(T, "JMP", size + len(cond_ops) * 2 + 4 > 64)
+        if self.hoisted:
+            line = self.emit("while True:", st)
+            self.code.indent += 1
+            first, _ = self.flush(None, st)
+            leave = c if st.until else (f"not ({c})" if " " in c else f"not {c}")
+            self.emit(f"if {leave}:", st)
+            self.code.indent += 1
+            brk = self.emit("break", st)
+            self.code.indent -= 2
+            self.charge(first, "b", cond_ops + [jz_not])
+            self.charge_add(brk, "b", jz_taken.rest - jz_not.rest)
+            _, last = self.loop_block(st.body, _LoopInfo("while"))
+        else:
+            line = self.emit(f"while {test}:", st)
+            body_first, last = self.loop_block(st.body, _LoopInfo("while"))
+            self.charge(body_first, "b", cond_ops + [jz_not])
+            self.charge(line, "e", cond_ops + [jz_taken])
+        self.charge(last, "a", [back])
+        return line, line
+
+    def s_RepeatFrom(self, st) -> tuple:
+        T = self.T
+        a, b = self.constant(st.start), self.constant(st.stop)
+        s = self.constant(st.step) if st.step is not None else 1
+        var = st.var
+        simple = (a is not None and b is not None and s is not None and isinstance(var, A.NameRef)
+                  and var.index is None and self.lookup(var.name, var)[0] in ("local", "var", "dat")
+                  and not _assigns(st.body, key(var.name)))
+        size = self.body_size(st.body)
+        init = self.piece(lambda: (self.mc.expr(st.start), self.mc.var(var, 1)))
+        step_piece = self.piece(lambda: self._step_code(st), inside=True)
+        long_back = size + self.size(lambda: self._step_code(st)) > 64
+        step_ops = self._fix_repeat(step_piece, st, long_back, True)
+        exit_ops = self._fix_repeat(step_piece, st, long_back, False)
+        delta = exit_ops[-1].rest - step_ops[-1].rest
+        target = self.expr(var).text
+        if simple:
+            first = None
+            stop = b + 1 if a <= b else b - 1
+            step = abs(s) if a <= b else -abs(s)
+            rng = f"range({a}, {stop}" + (f", {step})" if step != 1 else ")")
+            line = self.emit(f"for {target} in {rng}:", st)
+            self.charge(line, "b", init)
+            _, last = self.loop_block(st.body, _LoopInfo("from", next_ops=step_ops))
+            self.charge(last, "a", step_ops)
+            count = abs(b - a) // abs(s) if s else 0
+            final = a + (count + 1) * step
+            if not self.is_local(var) or self.objt.read_after(self.method, st, key(var.name)):
+                self.code.line("else:", None)
+                self.code.indent += 1
+                self.code.line(f"{target} = {final}  # Spin leaves the counter one step past the end", None)
+                self.code.indent -= 1
+            self.charge_add(line, "e", delta)
+            return line, line
+        start, stop_t = self.value(st.start), self.value(st.stop)
+        step_t = self.value(st.step) if st.step is not None else None
+        first, _ = self.flush(f"{target} = {start}", st)
+        self.charge(first, "b", init)
+        line = self.emit("while True:", st)
+        _, last = self.loop_block(st.body, _LoopInfo("general"))
+        self.code.indent += 1
+        args = f"{target}, {start}, {stop_t}" + (f", {step_t}" if step_t else "")
+        again = self.temp("again")
+        ln = self.emit(f"{target}, {again} = spin.repeat_step({args})", st)
+        self.charge(ln, "b", step_ops)
+        self.emit(f"if not {again}:", st)
+        self.code.indent += 1
+        brk = self.emit("break", st)
+        self.charge_add(brk, "b", delta)
+        self.code.indent -= 2
+        return first, line
+
+    def _step_code(self, st) -> None:
+        mc = self.mc
+        top = Label("top")
+        mc.code.mark(top)
+        if st.step is not None:
+            mc.expr(st.step)
+        mc.expr(st.start)
+        mc.expr(st.stop)
+        mc.var(st.var, USING)
+        mc.code.jump(bytes((0x06 if st.step is not None else 0x02,)), top, "repeat from")
+
+    def _fix_repeat(self, ops, st, long: bool, inside: bool) -> list:
+        """The step ops with the REPEAT operator priced as looping back (``inside``) or leaving."""
+        reg = isinstance(st.var, A.RegRef)
+        stepped = st.step is not None
+        last = ops[-1]
+        base = last.rest - self.T.repeat[(reg, stepped, True, False)]
+        return ops[:-1] + [Op(last.code, base + self.T.repeat[(reg, stepped, inside, long)], last.kind)]
+
+
+class _Given(A.Expr):
+    """An already translated operand (used to reuse operator translation)."""
+
+    def __init__(self, pos, x):
+        self.pos = pos
+        self.x = x
+
+
+def _assigns(stmts, name: str) -> bool:
+    """Does any statement in ``stmts`` assign the variable ``name`` (lower case)?"""
+    found = False
+
+    def visit(node):
+        nonlocal found
+        if found:
+            return
+        if isinstance(node, (A.Assign, A.PreOp, A.PostOp)):
+            t = node.target
+            if isinstance(t, A.NameRef) and key(t.name) == name:
+                found = True
+                return
+        if isinstance(node, A.RepeatFrom) and isinstance(node.var, A.NameRef) and key(node.var.name) == name:
+            found = True
+            return
+        if isinstance(node, A.Unary) and isinstance(node.operand, A.NameRef) and key(node.operand.name) == name:
+            pass
+        if isinstance(node, A.Node) or hasattr(node, "__dataclass_fields__"):
+            for f in getattr(node, "__dataclass_fields__", {}):
+                visit(getattr(node, f))
+        elif isinstance(node, list):
+            for x in node:
+                visit(x)
+
+    for s in stmts:
+        visit(s)
+    return found

@@ -1,0 +1,122 @@
+"""Weaving the cycle charges into a translated class, and loading translated modules.
+
+A generated module reads as plain Python; its cycle costs sit in one table
+at its end, ``SPIN_CYCLES = {line: (before, after, else)}``.  When a class
+first runs (:func:`prepare`), its methods are parsed from the module's own
+source, a charge is inserted before or after the statement on each listed
+line (``else`` charges go into the ``else:`` of an ``if``, ``while`` or ``for``,
+created if missing: a taken branch, a loop's exit), and the methods are
+compiled again from that tree, keeping the module's line numbers for
+tracebacks.  This is how pytest rewrites ``assert`` statements: the file you
+read is the file that runs, plus bookkeeping that does not change what it
+computes.
+
+Each charge is ``(aligned, extra)``: ``aligned`` cycles charged with a
+bytecode fetch's hub alignment (:func:`spinemu.translate.runtime.tick`),
+``extra`` cycles without (:func:`~spinemu.translate.runtime.add`).
+"""
+from __future__ import annotations
+
+import ast
+import importlib.util
+import inspect
+import os
+import sys
+
+from . import runtime, spin
+
+__all__ = ["prepare", "load_package"]
+
+_TICK, _ADD = "__spin_tick", "__spin_add"
+
+
+def _charge_stmts(charge, anchor) -> list:
+    if charge is None:
+        return []
+    aligned, extra = charge
+    out = []
+    for name, value in ((_TICK, aligned), (_ADD, extra)):
+        if value:
+            call = ast.Expr(ast.Call(ast.Name(name, ast.Load()), [ast.Constant(value)], []))
+            out.append(ast.copy_location(call, anchor))
+            ast.fix_missing_locations(call)
+    if aligned == 0 and not extra:
+        call = ast.Expr(ast.Call(ast.Name(_TICK, ast.Load()), [ast.Constant(0)], []))
+        out.append(ast.fix_missing_locations(ast.copy_location(call, anchor)))
+    return out
+
+
+def _weave_body(stmts: list, table: dict) -> list:
+    out = []
+    for s in stmts:
+        for field in ("body", "orelse", "finalbody"):
+            if isinstance(getattr(s, field, None), list) and not isinstance(s, ast.FunctionDef):
+                setattr(s, field, _weave_body(getattr(s, field), table))
+        if isinstance(s, ast.Try):
+            for h in s.handlers:
+                h.body = _weave_body(h.body, table)
+        row = table.get(s.lineno)
+        if row is None:
+            out.append(s)
+            continue
+        before, after, other = row
+        out.extend(_charge_stmts(before, s))
+        out.append(s)
+        if other is not None and isinstance(s, (ast.If, ast.While, ast.For)):
+            s.orelse = _charge_stmts(other, s) + s.orelse
+        out.extend(_charge_stmts(after, s))
+    return out
+
+
+def _weave_function(fn: ast.FunctionDef, table: dict) -> ast.FunctionDef:
+    fn.body = _weave_body(fn.body, table)
+    row = table.get(fn.lineno)
+    if row is not None and row[1] is not None:
+        fn.body.extend(_charge_stmts(row[1], fn.body[-1]))
+    return fn
+
+
+def prepare(cls) -> None:
+    """Weave the cycle charges into ``cls`` (a translated class) and its child classes, once."""
+    if cls.__dict__.get("_spin_woven"):
+        return
+    module = sys.modules[cls.__module__]
+    table = getattr(module, "SPIN_CYCLES", {})
+    source = inspect.getsource(module)
+    tree = ast.parse(source, filename=module.__file__)
+    module.__dict__[_TICK] = runtime.tick
+    module.__dict__[_ADD] = runtime.add
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef) and node.name == cls.__name__:
+            for item in node.body:
+                if isinstance(item, ast.FunctionDef):
+                    fn = _weave_function(item, table)
+                    code = compile(ast.Module([fn], []), module.__file__, "exec")
+                    ns: dict = {}
+                    exec(code, module.__dict__, ns)    # defines the woven function (no user strings)
+                    setattr(cls, item.name, ns[item.name])
+    cls._spin_woven = True
+    for value in vars(cls).values():
+        if isinstance(value, spin.Child):
+            prepare(value.cls)
+
+
+_loaded = 0
+
+
+def load_package(out_dir: str):
+    """Import the generated modules in ``out_dir`` as a fresh package; returns the package module."""
+    global _loaded
+    _loaded += 1
+    name = f"spinemu_translated_{_loaded}"
+    init = os.path.join(out_dir, "__init__.py")
+    spec = importlib.util.spec_from_file_location(name, init, submodule_search_locations=[out_dir])
+    package = importlib.util.module_from_spec(spec)
+    sys.modules[name] = package
+    spec.loader.exec_module(package)
+    return package
+
+
+def import_module(package, module: str):
+    """Import ``package.module`` (a generated module)."""
+    return importlib.import_module(f"{package.__name__}.{module}")
