@@ -8,7 +8,7 @@ the cycles the weaver charges around Python lines (see weave.py).
 """
 from __future__ import annotations
 
-from .costs import chain
+from .costs import access_at, chain
 
 __all__ = ["Code", "COMMENT_COLUMN"]
 
@@ -92,14 +92,19 @@ class Code:
         self._slot(line, slot)[1] += cycles
 
     def charge_table(self) -> dict:
-        """``{line: (before, after, else)}``, each ``(aligned cycles or None, extra cycles)`` or None."""
+        """``{line: (before, after, else)}``, each ``(aligned, extra[, access])`` or None.
+
+        ``access``: cycles from the fetch of the run's first bytecode to the start of its
+        first shared hub access (the moment the run must not pass other cogs).
+        """
         table = {}
         for line, entry in sorted(self.charges.items()):
             row = []
             for slot in "bae":
                 ops, extra = entry.get(slot, [[], 0])
                 k = chain(ops)
-                row.append(None if k is None and not extra else (k, extra))
+                a = access_at(ops)
+                row.append(None if k is None and not extra else (k, extra) if a is None else (k, extra, a))
             if any(row):
                 table[line] = tuple(row)
         return table

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from ..bytecode import TABLE, decode_assign, decode_unsigned, instruction_length
 from ..chip.timing import MATH_REF, Timing
 
-__all__ = ["Op", "price", "chain", "split", "jump_op", "ceil16"]
+__all__ = ["Op", "price", "chain", "split", "jump_op", "ceil16", "access_at"]
 
 
 @dataclass(frozen=True)
@@ -35,6 +35,7 @@ class Op:
     code: int
     rest: int
     kind: str = ""        # "", "read", "write", "call", "wait", "cog"
+    hub: bool = False     # reads or writes hub RAM other cogs may share (VAR, DAT, memory, locks)
 
 
 def ceil16(n: int) -> int:
@@ -74,6 +75,11 @@ def split(ops) -> tuple[list, list]:
     post = [o for o in post if o.kind != "wait"]
     pre = [o for o in pre if o.kind != "wait"]
     return pre, post
+
+
+def drop_result_delta(T: Timing) -> int:
+    """What a RETURN costs less when the caller's frame drops the result (a call used as a statement)."""
+    return T.returns(0x32, 1, False) - T.returns(0x32, 1, True)
 
 
 def jump_op(T: Timing, mnemonic: str, long: bool = False, taken: bool = True) -> Op:
@@ -116,9 +122,25 @@ def price(T: Timing, data: bytes, run_params: int = 0, inside: bool = True) -> l
     while i < n:
         op = data[i]
         length = instruction_length(data, i)
-        ops.append(Op(op, _rest(T, data, i, op, run_params, inside), _kind(data, i, op)))
+        ops.append(Op(op, _rest(T, data, i, op, run_params, inside), _kind(data, i, op), _hub(op)))
         i += length
     return ops
+
+
+def _hub(op: int) -> bool:
+    if 0x40 <= op < 0x80:
+        return not op & 0x20 and op & 3 != 3
+    if 0x80 <= op < 0xE0:
+        return (op >> 2) & 3 != 3 and op & 3 != 3
+    return 0x16 <= op <= 0x1E or 0x29 <= op <= 0x2F
+
+
+def access_at(ops):
+    """``chain`` of the ops before the first shared hub access (``None``: none, or it is the first op)."""
+    for k, o in enumerate(ops):
+        if o.hub:
+            return chain(ops[:k]) if k else None
+    return None
 
 
 def _kind(data, i, op) -> str:
@@ -184,7 +206,7 @@ def _rest(T: Timing, data, i: int, op: int, run_params: int, inside: bool) -> in
     if op == 0x26:
         return T.spr_using + _assign_rest(T, data[i + 1], True)
     if 0x30 <= op <= 0x33:
-        return T.returns(op, 1, op & 2 == 0)
+        return T.returns(op, 1, True)    # the caller pays the difference when it drops the result
     if 0x38 <= op <= 0x3B:
         return T.push_imm[op - 0x37]
     if op in (0x3D, 0x3E, 0x3F):

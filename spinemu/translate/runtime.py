@@ -28,9 +28,10 @@ from ..chip.control import Reschedule
 from ..chip.rom import INTERPRETER_ENTRY
 from ..chip.timing import load_timing
 from . import spin
+from .costs import drop_result_delta
 from .spin import RT, Abort
 
-__all__ = ["PythonChip", "Engine", "instantiate", "run_class", "tick", "add"]
+__all__ = ["PythonChip", "Engine", "instantiate", "run_class", "tick", "tick_at", "add"]
 
 _NEVER = 1 << 62
 _SPINSIM_START = -4
@@ -45,6 +46,22 @@ def tick(k: int) -> None:
         t = c.t
     t += 12
     c.t = t + ((c.hub_phase - t) & 15) + k
+
+
+def tick_at(k: int, access: int) -> None:
+    """:func:`tick` for a run whose first shared hub access starts ``access`` cycles after its fetch.
+
+    The run must not pass another cog before that access (the bytecode
+    engine would let the other cog's earlier writes land first), so the
+    cog waits for the scheduler at that moment, not at the run's start.
+    """
+    c = RT.cog
+    t = c.t + 12
+    t += (c.hub_phase - t) & 15
+    if t + access >= RT.limit:
+        c.t = t + access
+        RT.pause()
+    c.t = t + k
 
 
 def add(k: int) -> None:
@@ -104,7 +121,8 @@ class Engine:
                 method(*args)
             except Abort:
                 pass
-            # the top method returns into the ROM's COGID, COGSTOP bytecodes
+            # the top method returns (its frame drops the result) into the ROM's COGID, COGSTOP
+            add(drop_result_delta(self.T))
             tick(self.epilogue)
             t = spin._fetched()
             self.chip.stop_cog(c, t + self.T.cogstop_at, "returned from its top method")
@@ -133,6 +151,7 @@ class Engine:
         tf = spin._fetched()
         if not callable(method):                        # PASM: cognew(@code, par)
             par = args[0] if args else stack
+            RT.limit = -1
             return spin.wrap(chip.coginit(c, cog_id, method, par, tf))
         done = tf + self.T.coginit_done
         if cog_id >= 8:
@@ -155,6 +174,7 @@ class Engine:
                                 f"Python method {method.__qualname__} (started by cog {c.id})"))
         if keep != (0, 0):
             chip.note_pins(target, t_first)
+        RT.limit = -1           # the scheduler must look again (the bytecode engine reschedules too)
         return target.id
 
     def cogstop(self, cog_id: int) -> None:
@@ -166,6 +186,7 @@ class Engine:
             self.pause()
         elif target.state != STOPPED:
             chip.stop_cog(target, t, f"stopped by cog {c.id}")
+            RT.limit = -1
 
     def reboot(self) -> None:
         from ..chip.control import RebootRequested

@@ -30,7 +30,7 @@ from ..compiler.exprs import USING, push_const_bytes
 from ..compiler import stmts as cstmts
 from ..frontend import ast as A
 from ..frontend.ast import key
-from .costs import Op, price, jump_op, split
+from .costs import Op, drop_result_delta, price, jump_op, split
 from .exprs import ExprTranslator, X
 
 __all__ = ["MethodTranslator"]
@@ -186,12 +186,25 @@ class MethodTranslator(ExprTranslator):
             self.unary_assign(e)
         else:
             main = self.expr(e).text
-        ops = self.piece(lambda: self.mc.block([st]))
+        ops = self.piece(lambda: self.mc.block([st]), run_params=self.run_params(st))
         pre, post = split(ops)
         first, last = self.flush(main, st)
         self.charge(first, "b", pre)
+        if t in (A.Call, A.ObjCall) or (t is A.NameRef and main):
+            self.charge_add(last, "a", drop_result_delta(self.T))
         self.charge(last, "a", post)
         return first, last
+
+    def run_params(self, st) -> int:
+        """Parameters of the Spin method a ``cognew``/``coginit`` in ``st`` starts (for RUN's cost)."""
+        from .program import _walk
+        for n in _walk([st]):
+            if isinstance(n, A.Builtin) and n.name.lower() in ("cognew", "coginit") and n.args:
+                first = n.args[0] if n.name.lower() == "cognew" else n.args[min(1, len(n.args) - 1)]
+                first = first.expr if isinstance(first, A.Paren) else first
+                if isinstance(first, A.Call):
+                    return len(first.args)
+        return 0
 
     def s_Return(self, st) -> tuple:
         if st.value is None:
@@ -373,8 +386,11 @@ class MethodTranslator(ExprTranslator):
             body_size = self.body_size(br.body)
             j = "JNZ" if br.negate else "JZ"
             ops = self.expr_ops(br.cond) + [jump_op(self.T, j, body_size + 3 > 63, taken=False)]
-            self.charge(branch_first, "b", ops)
-            _, body_last = self.block(br.body)
+            pre, post = split(ops)
+            self.charge(branch_first, "b", pre)
+            body_first, body_last = self.block(br.body)
+            self.charge(body_first, "b", post)
+            self.charge(header, "e", post)
             if i < last or st.else_body is not None:
                 self.charge(body_last, "a", [jump_op(self.T, "JMP", False)])
         if st.else_body is not None:
@@ -505,9 +521,12 @@ class MethodTranslator(ExprTranslator):
             test = c if st.until else (f"not ({c})" if " " in c else f"not {c}")
             first, _ = self.flush(None, st.cond) if self.hoisted else (None, None)
             iff = self.emit(f"if {test}:", st.cond)
-            self.charge(first or iff, "b", cond_ops + [jump_op(T, j, long_j, True)])
+            pre, post = split(cond_ops + [jump_op(T, j, long_j, True)])
+            self.charge(first or iff, "b", pre)
+            self.charge(iff, "e", post)
             self.code.indent += 1
             brk = self.emit("break", st.cond)
+            self.charge(brk, "b", post)
             self.charge_add(brk, "b", jump_op(T, j, long_j, False).rest - jump_op(T, j, long_j, True).rest)
             self.code.indent -= 2
             return line, line
@@ -517,18 +536,25 @@ class MethodTranslator(ExprTranslator):
         jz_not = jump_op(T, j, size + 3 > 63, False)
         jz_taken = jump_op(T, j, size + 3 > 63, True)
         back = jump_op(T, "JMP", size + len(cond_ops) * 2 + 4 > 64)
-        if self.hoisted:
+        if self.hoisted or any(o.kind for o in cond_ops):
             line = self.emit("while True:", st)
             self.code.indent += 1
-            first, _ = self.flush(None, st)
+            hoisted, self.hoisted = self.hoisted, []
+            first = None
+            for h in hoisted:
+                ln = self.emit(h, st)
+                first = first or ln
             leave = c if st.until else (f"not ({c})" if " " in c else f"not {c}")
-            self.emit(f"if {leave}:", st)
+            iff = self.emit(f"if {leave}:", st)
             self.code.indent += 1
             brk = self.emit("break", st)
             self.code.indent -= 2
-            self.charge(first, "b", cond_ops + [jz_not])
+            pre, post = split(cond_ops + [jz_not])
+            self.charge(first or iff, "b", pre)
+            self.charge(brk, "b", post)
             self.charge_add(brk, "b", jz_taken.rest - jz_not.rest)
-            _, last = self.loop_block(st.body, _LoopInfo("while"))
+            body_first, last = self.loop_block(st.body, _LoopInfo("while"))
+            self.charge(body_first, "b", post)
         else:
             line = self.emit(f"while {test}:", st)
             body_first, last = self.loop_block(st.body, _LoopInfo("while"))

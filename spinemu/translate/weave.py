@@ -27,22 +27,26 @@ from . import runtime, spin
 
 __all__ = ["prepare", "load_package"]
 
-_TICK, _ADD = "__spin_tick", "__spin_add"
+_TICK, _TICK_AT, _ADD = "__spin_tick", "__spin_tick_at", "__spin_add"
+
+
+def _call(name, args, anchor):
+    call = ast.Expr(ast.Call(ast.Name(name, ast.Load()), [ast.Constant(a) for a in args], []))
+    return ast.fix_missing_locations(ast.copy_location(call, anchor))
 
 
 def _charge_stmts(charge, anchor) -> list:
     if charge is None:
         return []
-    aligned, extra = charge
+    aligned, extra = charge[0], charge[1]
     out = []
-    for name, value in ((_TICK, aligned), (_ADD, extra)):
-        if value:
-            call = ast.Expr(ast.Call(ast.Name(name, ast.Load()), [ast.Constant(value)], []))
-            out.append(ast.copy_location(call, anchor))
-            ast.fix_missing_locations(call)
-    if aligned == 0 and not extra:
-        call = ast.Expr(ast.Call(ast.Name(_TICK, ast.Load()), [ast.Constant(0)], []))
-        out.append(ast.fix_missing_locations(ast.copy_location(call, anchor)))
+    if extra:                   # belongs to the last bytecode already paid for: first
+        out.append(_call(_ADD, (extra,), anchor))
+    if aligned is not None:
+        if len(charge) > 2:
+            out.append(_call(_TICK_AT, (aligned, charge[2]), anchor))
+        else:
+            out.append(_call(_TICK, (aligned,), anchor))
     return out
 
 
@@ -85,6 +89,7 @@ def prepare(cls) -> None:
     source = inspect.getsource(module)
     tree = ast.parse(source, filename=module.__file__)
     module.__dict__[_TICK] = runtime.tick
+    module.__dict__[_TICK_AT] = runtime.tick_at
     module.__dict__[_ADD] = runtime.add
     for node in tree.body:
         if isinstance(node, ast.ClassDef) and node.name == cls.__name__:
