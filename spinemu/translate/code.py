@@ -28,6 +28,7 @@ class Code:
         self.spin_lines: list = []
         self.indent = 0
         self.charges: dict = {}
+        self.lookups: dict = {}
         self._commented: set = set()
         self._last_spin = 0
 
@@ -91,6 +92,10 @@ class Code:
         """Charge plain cycles (no fetch alignment) at ``slot`` of ``line``."""
         self._slot(line, slot)[1] += cycles
 
+    def charge_mid(self, line: int, ops) -> None:
+        """Bytecodes from a register read on, paid by the read itself (see costs.split_read)."""
+        self.charges.setdefault(line, {})["mid"] = list(ops)
+
     def charge_table(self) -> dict:
         """``{line: (before, after, else)}``, each ``(aligned, extra[, access])`` or None.
 
@@ -105,6 +110,10 @@ class Code:
                 k = chain(ops)
                 a = access_at(ops)
                 row.append(None if k is None and not extra else (k, extra) if a is None else (k, extra, a))
+            mid = entry.get("mid")
+            if mid:
+                b = row[0] or (None, 0)
+                row[0] = (b[0], b[1], b[2] if len(b) > 2 else None, chain(mid))
             if any(row):
                 table[line] = tuple(row)
         return table

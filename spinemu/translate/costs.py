@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from ..bytecode import TABLE, decode_assign, decode_unsigned, instruction_length
 from ..chip.timing import MATH_REF, Timing
 
-__all__ = ["Op", "price", "chain", "split", "jump_op", "ceil16", "access_at"]
+__all__ = ["Op", "price", "chain", "split", "split_read", "jump_op", "ceil16", "access_at"]
 
 
 @dataclass(frozen=True)
@@ -75,6 +75,21 @@ def split(ops) -> tuple[list, list]:
     post = [o for o in post if o.kind != "wait"]
     pre = [o for o in pre if o.kind != "wait"]
     return pre, post
+
+
+def split_read(pre) -> tuple[list, list]:
+    """Split a pre-paid run at its first register read: ``(before the read, from the read on)``.
+
+    ``waitcnt(cnt + x)`` reads CNT, then computes, then waits: the read must
+    see the cycle at which its bytecode starts, so the rest is paid by the
+    read itself (``spin._read``).
+    """
+    for k, o in enumerate(pre):
+        if o.kind == "read":
+            if k + 1 < len(pre):
+                return pre[:k], pre[k:]
+            break
+    return pre, []
 
 
 def drop_result_delta(T: Timing) -> int:

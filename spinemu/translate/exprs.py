@@ -304,17 +304,52 @@ class ExprTranslator:
 
     # ------------------------------------------------------------------ side effects
     def x_Assign(self, node) -> X:
-        self.assign(node)
-        return self.reread(node.target)
+        if not self.narrow(node.target):
+            self.assign(node)
+            return self.reread(node.target)
+        # a byte/word/bit-field target keeps the low bits, but the expression's value is the whole result
+        value = self.expr(node.value)
+        if node.op != ":=":
+            op = node.op.upper() if node.op.isalpha() else node.op
+            value = self.wrapped(self.binop(op, self.expr(node.target), value))
+        tmp = self.temp("value")
+        self.hoisted.append(f"{tmp} = {self.wrapped(value).text}")
+        self.store(node.target, X(tmp), len(self.hoisted))
+        return X(tmp)
 
     def x_PreOp(self, node) -> X:
         return self.pre_op(node)
 
     def pre_op(self, node) -> X:
+        if node.op in ("~", "~~", "?") and self.narrow(node.target):
+            fn = {"~": "sign_extend_byte", "~~": "sign_extend_word", "?": "random_forward"}[node.op]
+            tmp = self.temp("value")
+            self.hoisted.append(f"{tmp} = spin.{fn}({self.expr(node.target).text})")
+            self.store(node.target, X(tmp), len(self.hoisted))
+            return X(tmp)
         self.step(node.target, node.op)
         return self.reread(node.target)
 
+    def narrow(self, target) -> bool:
+        """Is ``target`` narrower than a long (its stored value may differ from the assigned one)?"""
+        if isinstance(target, (A.MemRef, A.MemberRef)):
+            return target.size < 4
+        if isinstance(target, A.RegRef):
+            return target.bit is not None
+        if isinstance(target, A.NameRef):
+            kind, sym = self.lookup(target.name, target)
+            return kind in ("var", "dat") and sym.size < 4
+        return False
+
     def x_PostOp(self, node) -> X:
+        if node.op == "?":          # x? leaves the new value, like ?x (Propeller Manual, "Random")
+            if self.narrow(node.target):
+                tmp = self.temp("value")
+                self.hoisted.append(f"{tmp} = spin.random_reverse({self.expr(node.target).text})")
+                self.store(node.target, X(tmp), len(self.hoisted))
+                return X(tmp)
+            self.step(node.target, node.op, post=True)
+            return self.reread(node.target)
         old = self.temp("old_" + _short(node.target))
         self.hoisted.append(f"{old} = {self.expr(node.target).text}")
         self.step(node.target, node.op, post=True)
@@ -359,13 +394,20 @@ class ExprTranslator:
     # ------------------------------------------------------------------ lookups
     def x_Lookup(self, node) -> X:
         items = []
+        costs = []
+        down = node.name.lower().startswith("lookdown")
         for item in node.items:
             if isinstance(item, A.Range):
                 items.append(f"spin.span({self.value(item.low)}, {self.value(item.high)})")
+                costs.append(self.lookup_item_cost([item.low, item.high], down, True))
             elif isinstance(item, A.Str) and len(self.obj.char_bytes(item.text)) > 1:
-                items.extend(str(b) for b in self.obj.char_bytes(item.text))
+                for b in self.obj.char_bytes(item.text):
+                    items.append(str(b))
+                    costs.append(self.lookup_item_cost([A.Number(item.pos, b, str(b))], down, False))
             else:
                 items.append(self.value(item))
+                costs.append(self.lookup_item_cost([item], down, False))
+        self.pending_lookups.append(costs)
         return X(f"spin.{node.name.lower()}({self.value(node.value)}, [{', '.join(items)}])")
 
     def x_Range(self, node):

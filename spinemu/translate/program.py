@@ -261,6 +261,12 @@ class ObjectTranslator:
         for line, row in table.items():
             code.raw(f"    {line}: {row!r},")
         code.raw("}")
+        if code.lookups:
+            code.raw("# lookup/lookdown lines: cycles per item, of LOOK_DONE, and what a match adds per item")
+            code.raw("SPIN_LOOKUPS = {")
+            for line, row in sorted(code.lookups.items()):
+                code.raw(f"    {line}: {row!r},")
+            code.raw("}")
         return ModuleText(module_name(self.unit.path), cls, code.text(), code.spin_lines, self.unit.path,
                           [c.path for c in children])
 

@@ -31,7 +31,7 @@ from . import spin
 from .costs import drop_result_delta
 from .spin import RT, Abort
 
-__all__ = ["PythonChip", "Engine", "instantiate", "run_class", "tick", "tick_at", "add"]
+__all__ = ["PythonChip", "Engine", "instantiate", "run_class", "tick", "tick_at", "tick_read", "add"]
 
 _NEVER = 1 << 62
 _SPINSIM_START = -4
@@ -62,6 +62,16 @@ def tick_at(k: int, access: int) -> None:
         c.t = t + access
         RT.pause()
     c.t = t + k
+
+
+def tick_read(k, access, rest: int) -> None:
+    """Charge ``k`` (``None``: nothing) as :func:`tick_at`/:func:`tick`, and leave ``rest`` for the register read that follows."""
+    if k is not None:
+        if access is not None:
+            tick_at(k, access)
+        else:
+            tick(k)
+    RT.pending = rest
 
 
 def add(k: int) -> None:
@@ -265,18 +275,24 @@ class PythonChip(Chip):
         self._video_ready = [0] * 8
         RT.attach(self.mem)
         RT.chip, RT.T, RT.engine, RT.pause = self, self.timing, self.engine, self.engine.pause
+        RT.pending = None
         t_first = 0 if self.spinsim else COG_LOAD_CYCLES
         c = self.cogs[0]
         c.reset_registers()
         c.par = 0x0004
         first = _first_method(self.top)
         self.engine.start(c, first, (), t_first)
-        self.cog_events.append((t_first, 0, "start", f"Python method {first.__qualname__} (boot)"))
+        name = getattr(first, "__qualname__", None) or first.func.__qualname__
+        self.cog_events.append((t_first, 0, "start", f"Python method {name} (boot)"))
 
 
 def _first_method(obj):
-    name = type(obj).SPIN_FIRST_METHOD
-    return getattr(obj, name)
+    """The top object's first method; its parameters start as zeros (the boot stack is cleared RAM)."""
+    import functools
+    import inspect
+    method = getattr(obj, type(obj).SPIN_FIRST_METHOD)
+    n = len(inspect.signature(method).parameters)
+    return functools.partial(method, *([0] * n)) if n else method
 
 
 assert INTERPRETER_ENTRY  # the Spin interpreter's address: PASM starts elsewhere

@@ -44,10 +44,10 @@ POSX, NEGX = 0x7FFFFFFF, -0x80000000
 class _State:
     """What the running chip shares with this module (set by spinemu.translate.runtime)."""
 
-    __slots__ = ("cog", "limit", "engine", "chip", "T", "mem", "L", "Ls", "W", "pause")
+    __slots__ = ("cog", "limit", "engine", "chip", "T", "mem", "L", "Ls", "W", "pause", "pending")
 
     def __init__(self):
-        self.cog = self.engine = self.chip = self.T = self.pause = None
+        self.cog = self.engine = self.chip = self.T = self.pause = self.pending = None
         self.limit = 0
         self.mem = bytearray(0x10000)
         self._views()
@@ -184,15 +184,35 @@ def repeat_step(x: int, start: int, stop: int, step: int = 1) -> tuple:
     return wrap(x), stop <= x <= start
 
 
+def _look_cycles(k) -> None:
+    """Pay what a lookup/lookdown that matched item ``k`` (None: no match) costs beyond the static charge.
+
+    The statement paid for every item and LOOK_DONE; the caller's module lists,
+    per line, each item's cycles, LOOK_DONE's and what a match adds
+    (``SPIN_LOOKUPS``, written by the translator).
+    """
+    if RT.T is None or k is None:
+        return
+    import sys
+    caller = sys._getframe(3)
+    row = caller.f_globals.get("SPIN_LOOKUPS", {}).get(caller.f_lineno)
+    if row is None:
+        return
+    items, done, found = row
+    RT.cog.t += found[k] - sum(items[k + 1:]) - done
+
+
 def _look(index: int, items, base: int) -> int:
     i = index - base
-    for item in items:
+    for k, item in enumerate(items):
         if isinstance(item, range):
             if 0 <= i < len(item):
+                _look_cycles(k)
                 return item[i]
             i -= len(item)
         else:
             if i == 0:
+                _look_cycles(k)
                 return item
             i -= 1
     return 0
@@ -210,13 +230,15 @@ def lookupz(index: int, items) -> int:
 
 def _find(value: int, items, base: int) -> int:
     n = base
-    for item in items:
+    for k, item in enumerate(items):
         if isinstance(item, range):
             if value in item:
+                _look_cycles(k)
                 return n + item.index(value)
             n += len(item)
         else:
             if value == item:
+                _look_cycles(k)
                 return n
             n += 1
     return 0
@@ -408,6 +430,10 @@ class Object:
         var = getattr(type(self), name)
         return var.address(self) + index * var.mem.size
 
+    def string(self, offset: int, text: str = "") -> int:
+        """Spin's ``string("...")``: the hub address of the string the compiler put at ``offset`` in this object."""
+        return self._pbase + offset
+
     def object_base(self) -> int:
         """The hub address of this object (what Spin's ``@@`` adds)."""
         return self._pbase
@@ -445,7 +471,12 @@ def _fetched() -> int:
 
 def _read(reg: int, op: int) -> int:
     c = RT.cog
-    return RT.chip.registers.read(c, reg, _fetched() + RT.T.reg_read_at[(op, 0)])
+    tf = _fetched()
+    value = RT.chip.registers.read(c, reg, tf + RT.T.reg_read_at[(op, 0)])
+    if RT.pending is not None:          # the statement's bytecodes from this read on
+        c.t = tf + RT.pending
+        RT.pending = None
+    return value
 
 
 def _write(reg: int, value: int) -> None:

@@ -30,7 +30,7 @@ from ..compiler.exprs import USING, push_const_bytes
 from ..compiler import stmts as cstmts
 from ..frontend import ast as A
 from ..frontend.ast import key
-from .costs import Op, drop_result_delta, price, jump_op, split
+from .costs import Op, ceil16, drop_result_delta, price, jump_op, split, split_read
 from .exprs import ExprTranslator, X
 
 __all__ = ["MethodTranslator"]
@@ -68,6 +68,7 @@ class MethodTranslator(ExprTranslator):
         self.hoisted: list = []
         self.loops: list = []
         self.temps: set = set()
+        self.pending_lookups: list = []
         self.path = method.pos.path
 
     # ------------------------------------------------------------------ helpers for exprs.py
@@ -128,6 +129,15 @@ class MethodTranslator(ExprTranslator):
     def expr_ops(self, node) -> list:
         return self.piece(lambda: self.mc.expr(node))
 
+    def lookup_item_cost(self, exprs, down: bool, is_range: bool) -> tuple:
+        """``(cycles of the item, extra cycles when it matches)`` of one lookup/lookdown item."""
+        T = self.T
+        ops = [o for e in exprs for o in self.expr_ops(e)]
+        name = ("lookdown" if down else "lookup") + ("_range" if is_range else "_value")
+        table = getattr(T, name)
+        found, missed = ceil16(table[True] + 12), ceil16(table[False] + 12)
+        return sum(ceil16(o.rest + 12) for o in ops) + missed, found - missed
+
     def charge(self, line: int, slot: str, ops) -> None:
         if line is not None and ops:
             self.code.charge(line, slot, list(ops))
@@ -167,6 +177,10 @@ class MethodTranslator(ExprTranslator):
         for text in lines:
             last = self.emit(text, node)
             first = first or last
+            if "spin.look" in text and self.pending_lookups:
+                costs = self.pending_lookups.pop(0)
+                self.code.lookups[last] = ([c for c, _ in costs], ceil16(self.T.look_done + 12),
+                                           [f for _, f in costs])
         if first is None:
             first = last = self.emit("pass", node)
         return first, last
@@ -188,8 +202,11 @@ class MethodTranslator(ExprTranslator):
             main = self.expr(e).text
         ops = self.piece(lambda: self.mc.block([st]), run_params=self.run_params(st))
         pre, post = split(ops)
+        pre, mid = split_read(pre)
         first, last = self.flush(main, st)
         self.charge(first, "b", pre)
+        if mid:
+            self.code.charge_mid(first, mid)
         if t in (A.Call, A.ObjCall) or (t is A.NameRef and main):
             self.charge_add(last, "a", drop_result_delta(self.T))
         self.charge(last, "a", post)
@@ -253,8 +270,8 @@ class MethodTranslator(ExprTranslator):
     # ------------------------------------------------------------------ assignments
     def assign(self, node) -> None:
         target = node.target
-        mark = len(self.hoisted)
         value = self.expr(node.value)
+        mark = len(self.hoisted)
         if node.op == ":=":
             self.store(target, value, mark)
             return

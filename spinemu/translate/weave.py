@@ -27,7 +27,7 @@ from . import runtime, spin
 
 __all__ = ["prepare", "load_package"]
 
-_TICK, _TICK_AT, _ADD = "__spin_tick", "__spin_tick_at", "__spin_add"
+_TICK, _TICK_AT, _TICK_READ, _ADD = "__spin_tick", "__spin_tick_at", "__spin_tick_read", "__spin_add"
 
 
 def _call(name, args, anchor):
@@ -42,7 +42,9 @@ def _charge_stmts(charge, anchor) -> list:
     out = []
     if extra:                   # belongs to the last bytecode already paid for: first
         out.append(_call(_ADD, (extra,), anchor))
-    if aligned is not None:
+    if len(charge) > 3:
+        out.append(_call(_TICK_READ, (aligned, charge[2], charge[3]), anchor))
+    elif aligned is not None:
         if len(charge) > 2:
             out.append(_call(_TICK_AT, (aligned, charge[2]), anchor))
         else:
@@ -90,6 +92,7 @@ def prepare(cls) -> None:
     tree = ast.parse(source, filename=module.__file__)
     module.__dict__[_TICK] = runtime.tick
     module.__dict__[_TICK_AT] = runtime.tick_at
+    module.__dict__[_TICK_READ] = runtime.tick_read
     module.__dict__[_ADD] = runtime.add
     for node in tree.body:
         if isinstance(node, ast.ClassDef) and node.name == cls.__name__:
