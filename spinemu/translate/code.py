@@ -97,7 +97,7 @@ class Code:
         self.charges.setdefault(line, {})["mid"] = list(ops)
 
     def charge_table(self) -> dict:
-        """``{line: (before, after, else)}``, each ``(aligned, extra[, access])`` or None.
+        """``{line: (before, after, else[, test])}``, each ``(aligned, extra[, access])`` or None.
 
         ``access``: cycles from the fetch of the run's first bytecode to the start of its
         first shared hub access (the moment the run must not pass other cogs).
@@ -105,7 +105,7 @@ class Code:
         table = {}
         for line, entry in sorted(self.charges.items()):
             row = []
-            for slot in "bae":
+            for slot in "baet":
                 ops, extra = entry.get(slot, [[], 0])
                 k = chain(ops)
                 a = access_at(ops)
@@ -114,6 +114,8 @@ class Code:
             if mid:
                 b = row[0] or (None, 0)
                 row[0] = (b[0], b[1], b[2] if len(b) > 2 else None, chain(mid))
+            if not row[3]:
+                row.pop()
             if any(row):
                 table[line] = tuple(row)
         return table

@@ -98,6 +98,8 @@ class Engine:
         self.epilogue = epilogue
         self.greenlets = {}
         self.scheduler = None
+        #: (cog, first, end): where each started Spin cog's stack begins, and what RUN wrote at least
+        self.stacks: list = []
 
     # ---------------------------------------------------------------- scheduler side
     def run(self, c, limit: int) -> None:
@@ -117,9 +119,15 @@ class Engine:
         if c.state == STOPPED:
             raise _CogStopped()
 
-    def start(self, c, method, args, t_first: int) -> None:
-        """Make cog ``c`` run ``method(*args)``, its first statement at the interpreter's first bytecode."""
+    def start(self, c, method, args, t_first: int, dbase: int, frame_end: int = 0) -> None:
+        """Make cog ``c`` run ``method(*args)``, its first statement at the interpreter's first bytecode.
+
+        ``dbase``: where the bytecode interpreter would put the method's frame
+        (its stack starts 8 bytes below, at the return frame).
+        """
         c.engine = self
+        c.dbase = dbase
+        self.stacks.append((c.id, (dbase - 8) & 0xFFFF, max(frame_end, dbase)))
         c.state = RUNNING
         c.started_at = t_first
         c.t = self.T.interpreter_start(t_first, c.hub_phase)
@@ -134,6 +142,7 @@ class Engine:
             # the top method returns (its frame drops the result) into the ROM's COGID, COGSTOP
             add(drop_result_delta(self.T))
             tick(self.epilogue)
+            spin.long[c.dbase - 8] = c.id      # COGID's push lands on the return frame
             t = spin._fetched()
             self.chip.stop_cog(c, t + self.T.cogstop_at, "returned from its top method")
         except _CogStopped:
@@ -179,7 +188,8 @@ class Engine:
         target.reset_registers()
         target.dira, target.outa = keep
         target.par = (stack + 12 + 4 * len(args)) & 0xFFFC
-        self.start(target, method, args, t_first)
+        # RUN leaves the frame, the arguments and the new interpreter's words at PAR+2..PAR+11
+        self.start(target, method, args, t_first, stack + 8, target.par + 12)
         chip.cog_events.append((t_first, target.id, "start",
                                 f"Python method {method.__qualname__} (started by cog {c.id})"))
         if keep != (0, 0):
@@ -252,7 +262,9 @@ def run_class(cls, image: bytes, *, max_cycles=None, compat: str = "chip", input
     T = load_timing()
     epilogue = T.reg[(0x3F, 0)]        # the ROM's COGID ($3F $89) before COGSTOP
     chip = PythonChip(image, top, epilogue, compat=compat, inputs=inputs)
-    return chip.run(max_cycles)
+    result = chip.run(max_cycles)
+    result.stats["stacks"] = list(chip.engine.stacks)
+    return result
 
 
 class PythonChip(Chip):
@@ -281,7 +293,7 @@ class PythonChip(Chip):
         c.reset_registers()
         c.par = 0x0004
         first = _first_method(self.top)
-        self.engine.start(c, first, (), t_first)
+        self.engine.start(c, first, (), t_first, self.header.dbase)
         name = getattr(first, "__qualname__", None) or first.func.__qualname__
         self.cog_events.append((t_first, 0, "start", f"Python method {name} (boot)"))
 

@@ -575,8 +575,8 @@ class MethodTranslator(ExprTranslator):
         else:
             line = self.emit(f"while {test}:", st)
             body_first, last = self.loop_block(st.body, _LoopInfo("while"))
-            self.charge(body_first, "b", cond_ops + [jz_not])
-            self.charge(line, "e", cond_ops + [jz_taken])
+            self.charge(line, "t", cond_ops + [jz_not])
+            self.charge_add(line, "e", jz_taken.rest - jz_not.rest)
         self.charge(last, "a", [back])
         return line, line
 

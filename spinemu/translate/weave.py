@@ -65,7 +65,11 @@ def _weave_body(stmts: list, table: dict) -> list:
         if row is None:
             out.append(s)
             continue
-        before, after, other = row
+        before, after, other = row[:3]
+        if len(row) > 3 and isinstance(s, ast.While):
+            # charged each time the loop's condition is evaluated: ``while tick(...) or cond:``
+            charge = _charge_stmts(row[3], s)
+            s.test = ast.copy_location(ast.BoolOp(ast.Or(), [c.value for c in charge] + [s.test]), s.test)
         out.extend(_charge_stmts(before, s))
         out.append(s)
         if other is not None and isinstance(s, (ast.If, ast.While, ast.For)):
