@@ -248,9 +248,9 @@ class ObjectTranslator:
         self.constants(code)
         self.variables(code)
         self.objects(code)
-        self.dat(code)
         for m in spin.methods:
             self.method(code, m)
+        self.dat(code)
         code.indent = 0
         code.raw("")
         code.raw("")
