@@ -3,7 +3,7 @@ VAR
   long total, table[16]
 
 PUB main | i, j, x
-  repeat i from 0 to 299
+  repeat i from 0 to 999
     x := i
     repeat j from 0 to 15
       table[j] := table[j] + x * j
