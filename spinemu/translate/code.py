@@ -29,6 +29,7 @@ class Code:
         self.indent = 0
         self.charges: dict = {}
         self.lookups: dict = {}
+        self.call_depths: dict = {}
         self._commented: set = set()
         self._last_spin = 0
 

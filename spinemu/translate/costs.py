@@ -249,6 +249,70 @@ def _rest(T: Timing, data, i: int, op: int, run_params: int, inside: bool) -> in
     raise ValueError(f"cannot price bytecode {name}")
 
 
+def call_depths(data: bytes, nparams) -> list:
+    """Stack bytes in use when each FRAME in ``data`` starts (where the called method's frame goes).
+
+    ``nparams(code_bytes, i)`` gives the parameter count of the call at ``i``.
+    Depth is counted in longs from the statement's start; a FRAME takes three
+    (return frame and result), a CALL drops the parameters and the frame and
+    leaves the result if the frame kept it.
+    """
+    depths, depth, frames = [], 0, []
+    i = 0
+    while i < len(data):
+        op = data[i]
+        length = instruction_length(data, i)
+        entry = TABLE[op]
+        if op <= 0x03:
+            depths.append(4 * depth)
+            frames.append(op)
+            depth += 3
+        elif op in (0x05, 0x06, 0x07):
+            depth -= nparams(data, i) + 3 + (1 if op == 0x07 else 0)
+            kept = frames.pop() & 1 == 0 if frames else False
+            depth += 1 if kept else 0
+        elif 0x40 <= op < 0xE0 or op in (0x3D, 0x3E, 0x3F, 0x26):
+            depth += _access_effect(data, i, op)
+        elif entry.pops is not None and entry.pushes is not None:
+            depth += entry.pushes - entry.pops
+        i += length
+    return depths
+
+
+def _access_effect(data, i: int, op: int) -> int:
+    """Stack effect of a variable, memory or register access (the USING operator's push bit included)."""
+    if op in (0x3D, 0x3E, 0x3F):
+        access = (data[i + 1] >> 5) & 3
+        index = {0x3D: 1, 0x3E: 2, 0x3F: 0}[op]
+        using_at = i + 2
+    elif op == 0x26:
+        access, index, using_at = 2, 1, i + 1
+    else:
+        access = op & 3
+        index = 0
+        using_at = i + 1
+        if op >= 0x80:
+            base = (op >> 2) & 3
+            index = (1 if op & 0x10 else 0) + (1 if base == 0 else 0)
+            if base:
+                _, using_at = decode_unsigned(data, i + 1)
+    if access == 0 or access == 3:
+        return 1 - index
+    if access == 1:
+        return -1 - index
+    aop = decode_assign(data[using_at])
+    if aop is None:
+        return -index
+    pushed = 1 if aop.push else 0
+    if aop.mnemonic == "WRITE":
+        return -1 + pushed - index
+    if aop.math is not None and not aop.math.unary:
+        return -1 + pushed - index
+    if aop.has_jump:
+        return -index - (3 if aop.mnemonic == "REPEAT_STEP" else 2)
+    return pushed - index
+
+
 def _jl(data, p: int) -> bool:
     """Is the jump operand at ``p`` (if any) the two-byte form?"""
     return p < len(data) and bool(data[p] & 0x80)

@@ -152,19 +152,28 @@ class ExprTranslator:
 
     def x_ResultRef(self, node) -> X:
         if node.index is not None:
-            self.unsupported("an indexed result (result[i])", node)
-        return X(self.result_name)
+            if not self.in_frame:
+                self.unsupported("an indexed result (result[i])", node)
+            return X(f'{self.frame_name}.at("{self.result_name}")[{self.value(node.index)}]')
+        return X(f"{self.frame_name}.{self.result_name}" if self.in_frame else self.result_name)
 
     def read_var(self, kind, sym, node) -> X:
         index = getattr(node, "index", None)
         if kind == "local":
-            if index is not None:
-                self.unsupported(f"an indexed local variable ({node.name}[...])", node)
-            return X(self.names.local(node.name))
+            name = self.names.local(node.name)
+            if not self.in_frame:
+                if index is not None:
+                    self.unsupported(f"an indexed local variable ({node.name}[...])", node)
+                return X(name)
+            if index is None:
+                return X(f"{self.frame_name}.{name}" + ("[0]" if sym.count > 1 else ""))
+            if sym.count > 1:
+                return X(f"{self.frame_name}.{name}[{self.value(index)}]")
+            return X(f'{self.frame_name}.at("{name}")[{self.value(index)}]')
         attr = self.names.attr(node.name)
         if index is None:
             if sym.count > 1:
-                return X(f"self.{attr}.addr")     # an array's name alone: never reached (compiler rejects)
+                return X(f"self.{attr}[0]")       # an array's name alone is its first element
             return X(f"self.{attr}")
         i = self.value(index)
         if sym.count > 1:
@@ -173,13 +182,17 @@ class ExprTranslator:
 
     def x_MemberRef(self, node) -> X:
         base = node.base
-        kind, sym = self.lookup(getattr(base, "name", "result"), base)
-        if kind not in ("var", "dat"):
+        if isinstance(base, A.ResultRef):
+            kind, name = "local", self.result_name
+        else:
+            kind, sym = self.lookup(base.name, base)
+            name = self.names.local(base.name) if kind == "local" else self.names.attr(base.name)
+        if kind not in ("var", "dat", "local") or (kind == "local" and not self.in_frame):
             self.unsupported("a member access (x.byte[i]) of a local variable", node)
-        attr = self.names.attr(base.name)
+        owner = self.frame_name if kind == "local" else "self"
         i = self.value(node.sub) if node.sub is not None else "0"
         index = self.value(base.index) if getattr(base, "index", None) is not None else "0"
-        return X(f'self.at("{attr}", {index}, size={node.size})[{i}]')
+        return X(f'{owner}.at("{name}", {index}, size={node.size})[{i}]')
 
     def x_MemRef(self, node) -> X:
         mem = {1: "byte", 2: "word", 4: "long"}[node.size]
@@ -377,7 +390,16 @@ class ExprTranslator:
                 if t.index is None:
                     return X(f'self.addr("{attr}")')
                 return X(f'self.addr("{attr}", {self.value(t.index)})')
+            if kind == "local" and self.in_frame:
+                name = self.names.local(t.name)
+                if t.index is None:
+                    return X(f'{self.frame_name}.addr("{name}")')
+                return X(f'{self.frame_name}.addr("{name}", {self.value(t.index)})')
             self.unsupported(f"the address of a local variable (@{t.name})", node)
+        if isinstance(t, A.ResultRef) and self.in_frame:
+            if t.index is None:
+                return X(f'{self.frame_name}.addr("{self.result_name}")')
+            return X(f'{self.frame_name}.addr("{self.result_name}", {self.value(t.index)})')
         if isinstance(t, A.MemRef):
             size = t.size
             base = self.expr(t.base)

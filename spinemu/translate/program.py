@@ -165,6 +165,7 @@ class ObjectTranslator:
         self.infos = {key(m.name): m for m in cobj.methods}
         self._strings = {}
         self._dat_counts = _dat_counts(unit, self.oc)
+        self.frame_methods: set = set()
 
     # ------------------------------------------------------------------ lookups (for MethodTranslator)
     def unsupported(self, what: str, node):
@@ -261,6 +262,11 @@ class ObjectTranslator:
         for line, row in table.items():
             code.raw(f"    {line}: {row!r},")
         code.raw("}")
+        code.raw("# bytes each method's frame takes on the hub stack (result, parameters, locals), and")
+        code.raw("# the stack bytes in use at calls made from a line (where a called method's frame goes)")
+        sizes = {self.names.attr(m.name): 4 + 4 * m.nparams + m.locals_size for m in self.cobj.methods}
+        code.raw(f"SPIN_FRAME_SIZES = {sizes!r}")
+        code.raw(f"SPIN_CALL_DEPTHS = {dict(sorted(code.call_depths.items()))!r}")
         if code.lookups:
             code.raw("# lookup/lookdown lines: cycles per item, of LOOK_DONE, and what a match adds per item")
             code.raw("SPIN_LOOKUPS = {")
@@ -322,9 +328,6 @@ class ObjectTranslator:
 
     def method(self, code: Code, m) -> None:
         self.names.set_method(m)
-        for loc in m.locals:
-            if loc.count is not None:
-                self.unsupported(f"the local array {loc.name}[...]", loc)
         params = "".join(f", {self.names.local(p)}" for p, _ in m.params)
         code.line("")
         code.comments_before(m.pos.line)
@@ -343,10 +346,20 @@ class ObjectTranslator:
             code.skip_to(m.pos.line + len(doc) + 1)
         mt = MethodTranslator(self, m, code)
         uses_result = self.uses_result(m)
-        inits = [self.names.local(m.result or "result")] if uses_result else []
-        inits += [self.names.local(loc.name) for loc in m.locals if _needs_init(m, loc.name)]
-        if inits:
-            code.line(" = ".join(inits) + " = 0")
+        if mt.in_frame:
+            fields = [f"{self.names.local(m.result or 'result')}=0"]
+            fields += [f"{self.names.local(p)}={self.names.local(p)}" for p, _ in m.params]
+            for loc in m.locals:
+                count = "" if loc.count is None else str(self.oc.count_of(loc.count))
+                fields.append(f"{self.names.local(loc.name)}=spin.local({count})")
+            code.line("# this method's variables live in hub RAM, on the cog's stack (their address is used)")
+            code.line(f"{mt.frame_name} = spin.Frame({', '.join(fields)})")
+            self.frame_methods.add(m.name)
+        else:
+            inits = [self.names.local(m.result or "result")] if uses_result else []
+            inits += [self.names.local(loc.name) for loc in m.locals if _needs_init(m, loc.name)]
+            if inits:
+                code.line(" = ".join(inits) + " = 0")
         last = None
         for st in m.body:
             _first, last = mt.statement(st)
@@ -354,7 +367,7 @@ class ObjectTranslator:
         ends = m.body and isinstance(m.body[-1], (A.Return, A.Abort))
         if not ends:
             if uses_result:
-                line = code.line(f"return {self.names.local(m.result or 'result')}")
+                line = code.line(f"return {mt.result_text()}")
                 code.charge(line, "b", ret)
             elif last is None:
                 line = code.line("pass")

@@ -736,3 +736,83 @@ def wordmove(dst: int, src: int, count: int) -> None:
 
 def longmove(dst: int, src: int, count: int) -> None:
     _move(2, dst, src, count)
+
+
+# ----------------------------------------------------------------------------- hub frames
+class local:
+    """A local variable Spin does not initialise (``count`` longs): ``buf=spin.local(16)``."""
+
+    __slots__ = ("count",)
+
+    def __init__(self, count: int = 1):
+        self.count = count
+
+
+class Frame:
+    """A method's result, parameters and locals in hub RAM, where the bytecode interpreter keeps them.
+
+    Used by methods that take a local's address or index it (``@buf``,
+    ``buf[i]``): Spin code may hand such addresses to other methods and cogs,
+    so the variables must sit at the same stack addresses as on the chip.
+    ``Frame(result=0, x=x, buf=spin.local(8))`` lays them out in that order
+    (one long each, ``local(n)`` takes n) at the frame address the calling
+    chain gives (:func:`_frame_base`); ``frame.x`` reads and writes the hub.
+    """
+
+    __slots__ = ("_base", "_fields")
+
+    def __init__(self, **fields):
+        import sys
+        base = _frame_base(sys._getframe(1))
+        layout = {}
+        offset = 0
+        for name, value in fields.items():
+            count = value.count if isinstance(value, local) else 1
+            layout[name] = (offset, count)
+            if not isinstance(value, local):
+                long[base + offset] = value
+            offset += 4 * count
+        object.__setattr__(self, "_base", base)
+        object.__setattr__(self, "_fields", layout)
+
+    def __getattr__(self, name: str):
+        offset, count = self._fields[name]
+        a = self._base + offset
+        return _Array(a, long) if count != 1 else long[a]
+
+    def __setattr__(self, name: str, value: int) -> None:
+        long[self._base + self._fields[name][0]] = value
+
+    def addr(self, name: str, index: int = 0) -> int:
+        """Spin's ``@name`` (``@name[index]``) for a local."""
+        return self._base + self._fields[name][0] + 4 * index
+
+    def at(self, name: str, index: int = 0, size: int = 4) -> _Array:
+        """The local ``name`` seen as an array (``name[i]``, ``name.byte[i]``)."""
+        return _Array(self.addr(name, index), {1: byte, 2: word, 4: long}[size])
+
+
+def _frame_base(pyframe) -> int:
+    """The hub address of the frame (``dbase``) of the translated method running in ``pyframe``.
+
+    The bytecode interpreter puts a called method's frame where the caller's
+    stack ends: ``dbase(callee) = dbase(caller) + frame size(caller) + bytes
+    the caller's expression had pushed + 8`` (the return frame).  The chain
+    of translated methods is read from the Python call stack, from the cog's
+    top method (whose frame the runtime knows) down to this one; each module
+    lists its methods' frame sizes and its lines' stack use at calls.
+    """
+    chain = []
+    f = pyframe
+    while f is not None:
+        sizes = f.f_globals.get("SPIN_FRAME_SIZES")
+        if sizes is not None and f.f_code.co_name in sizes:
+            chain.append(f)
+        f = f.f_back
+    chain.reverse()
+    dbase = RT.cog.dbase
+    for caller in chain[:-1]:
+        g = caller.f_globals
+        depth = g.get("SPIN_CALL_DEPTHS", {}).get(caller.f_lineno, 0)
+        dbase += g["SPIN_FRAME_SIZES"][caller.f_code.co_name] + depth + 8
+    return dbase & 0xFFFF

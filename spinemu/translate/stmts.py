@@ -30,7 +30,7 @@ from ..compiler.exprs import USING, push_const_bytes
 from ..compiler import stmts as cstmts
 from ..frontend import ast as A
 from ..frontend.ast import key
-from .costs import Op, ceil16, drop_result_delta, price, jump_op, split, split_read
+from .costs import Op, call_depths, ceil16, drop_result_delta, price, jump_op, split, split_read
 from .exprs import ExprTranslator, X
 
 __all__ = ["MethodTranslator"]
@@ -65,10 +65,13 @@ class MethodTranslator(ExprTranslator):
         self.mc = cstmts.MethodCompiler(self.obj, method)
         self.frame = self.mc.frame
         self.result_name = self.names.local(method.result or "result")
+        self.in_frame = needs_hub_frame(method)
+        self.frame_name = self.names.temp_base("loc")
         self.hoisted: list = []
         self.loops: list = []
         self.temps: set = set()
         self.pending_lookups: list = []
+        self.last_data = b""
         self.path = method.pos.path
 
     # ------------------------------------------------------------------ helpers for exprs.py
@@ -79,6 +82,9 @@ class MethodTranslator(ExprTranslator):
         k = key(name)
         if k in self.frame:
             return "local", self.frame[k]
+        if k == "result":
+            from ..compiler.symbols import LocalSymbol
+            return "local", LocalSymbol("result", 0, 1)
         return self.objt.lookup(name, node)
 
     def temp(self, prefix: str) -> str:
@@ -106,7 +112,27 @@ class MethodTranslator(ExprTranslator):
         finally:
             mc.code, mc.loops = saved
         data = b"".join(s.data for s in spans if s.note != "string")
+        self.last_data = data
         return price(self.T, data, **kw)
+
+    def nparams(self, data, i: int) -> int:
+        """Parameters of the method the CALL/CALL_OBJ at ``data[i]`` calls."""
+        if data[i] == 0x05:
+            return self.obj.symbols.methods[data[i + 1] - 1].nparams
+        entry, method = data[i + 1], data[i + 2]
+        for sym in self.obj.symbols.objects:
+            if sym.index <= entry < sym.index + sym.count:
+                pubs = [m for m in sym.unit.spin.methods if m.public]
+                return len(pubs[method - 1].params)
+        return 0
+
+    def note_depths(self, lines) -> None:
+        """Record the stack bytes in use at the first call of the piece compiled last, for ``lines``."""
+        depths = call_depths(self.last_data, self.nparams)
+        if depths and depths[0]:
+            for line in lines:
+                if line is not None:
+                    self.code.call_depths[line] = depths[0]
 
     def size(self, fn) -> int:
         mc = self.mc
@@ -204,6 +230,7 @@ class MethodTranslator(ExprTranslator):
         pre, post = split(ops)
         pre, mid = split_read(pre)
         first, last = self.flush(main, st)
+        self.note_depths(range(first, last + 1))
         self.charge(first, "b", pre)
         if mid:
             self.code.charge_mid(first, mid)
@@ -223,21 +250,25 @@ class MethodTranslator(ExprTranslator):
                     return len(first.args)
         return 0
 
+    def result_text(self) -> str:
+        return f"{self.frame_name}.{self.result_name}" if self.in_frame else self.result_name
+
     def s_Return(self, st) -> tuple:
         if st.value is None:
-            main = f"return {self.result_name}" if self.objt.uses_result(self.method) else "return"
+            main = f"return {self.result_text()}" if self.objt.uses_result(self.method) else "return"
         else:
             main = f"return {self.value(st.value)}"
         return self.ending(st, main)
 
     def s_Abort(self, st) -> tuple:
         value = self.value(st.value) if st.value is not None else (
-            self.result_name if self.objt.uses_result(self.method) else "0")
+            self.result_text() if self.objt.uses_result(self.method) else "0")
         return self.ending(st, f"raise spin.Abort({value})")
 
     def ending(self, st, main) -> tuple:
         ops = self.piece(lambda: self.mc.block([st]))
         first, last = self.flush(main, st)
+        self.note_depths(range(first, last + 1))
         self.charge(first, "b", ops)
         return first, last
 
@@ -289,6 +320,9 @@ class MethodTranslator(ExprTranslator):
         return text, value
 
     def is_local(self, target) -> bool:
+        """Is ``target`` a Python local (stores must wrap to 32 bits themselves)?"""
+        if self.in_frame:
+            return False
         if isinstance(target, A.ResultRef):
             return True
         return isinstance(target, A.NameRef) and key(target.name) in self.frame
@@ -585,7 +619,8 @@ class MethodTranslator(ExprTranslator):
         a, b = self.constant(st.start), self.constant(st.stop)
         s = self.constant(st.step) if st.step is not None else 1
         var = st.var
-        simple = (a is not None and b is not None and s is not None and isinstance(var, A.NameRef)
+        count = _from_to_count(a, b, s)
+        simple = (count is not None and isinstance(var, A.NameRef)
                   and var.index is None and self.lookup(var.name, var)[0] in ("local", "var", "dat")
                   and not _assigns(st.body, key(var.name)))
         size = self.body_size(st.body)
@@ -597,16 +632,13 @@ class MethodTranslator(ExprTranslator):
         delta = exit_ops[-1].rest - step_ops[-1].rest
         target = self.expr(var).text
         if simple:
-            first = None
-            stop = b + 1 if a <= b else b - 1
-            step = abs(s) if a <= b else -abs(s)
-            rng = f"range({a}, {stop}" + (f", {step})" if step != 1 else ")")
+            step = s if a <= b else -s
+            final = a + count * step
+            rng = f"range({a}, {final}" + (f", {step})" if step != 1 else ")")
             line = self.emit(f"for {target} in {rng}:", st)
             self.charge(line, "b", init)
             _, last = self.loop_block(st.body, _LoopInfo("from", next_ops=step_ops))
             self.charge(last, "a", step_ops)
-            count = abs(b - a) // abs(s) if s else 0
-            final = a + (count + 1) * step
             if not self.is_local(var) or self.objt.read_after(self.method, st, key(var.name)):
                 self.code.line("else:", None)
                 self.code.indent += 1
@@ -650,6 +682,45 @@ class MethodTranslator(ExprTranslator):
         last = ops[-1]
         base = last.rest - self.T.repeat[(reg, stepped, True, False)]
         return ops[:-1] + [Op(last.code, base + self.T.repeat[(reg, stepped, inside, long)], last.kind)]
+
+
+def _from_to_count(a, b, s):
+    """How many times ``repeat x from a to b step s`` runs with constant bounds (None: not constant or endless)."""
+    if a is None or b is None or s is None:
+        return None
+    low, high = min(a, b), max(a, b)
+    delta = s if a <= b else -s
+    if delta == 0:
+        return None
+    x, n = a, 0
+    while low <= x <= high:
+        n += 1
+        x += delta
+        if n > 1 << 20:
+            return None
+    return n
+
+
+def needs_hub_frame(method) -> bool:
+    """Does ``method`` need its locals in hub RAM (a local array, ``@local``, ``local[i]``, ``local.byte``)?"""
+    from .program import _walk
+    if any(loc.count is not None for loc in method.locals):
+        return True
+    names = {key(p) for p, _ in method.params} | {key(loc.name) for loc in method.locals} | {"result"}
+    if method.result:
+        names.add(key(method.result))
+
+    def local_ref(t):
+        return isinstance(t, A.ResultRef) or (isinstance(t, A.NameRef) and key(t.name) in names)
+
+    for n in _walk(method.body):
+        if isinstance(n, A.AddrOf) and local_ref(n.target.expr if isinstance(n.target, A.Paren) else n.target):
+            return True
+        if isinstance(n, (A.NameRef, A.ResultRef)) and n.index is not None and local_ref(n):
+            return True
+        if isinstance(n, A.MemberRef) and local_ref(n.base):
+            return True
+    return False
 
 
 class _Given(A.Expr):

@@ -26,10 +26,6 @@ DEFAULT_BUDGET = 3_000_000
 
 #: programs the translator does not handle yet, and why
 KNOWN_GAPS = {
-    "access_all.spin": "local arrays (hub frames are not mirrored yet)",
-    "access_long_offsets.spin": "the address of a local variable (@local)",
-    "access_sizes.spin": "local arrays (hub frames are not mirrored yet)",
-    "cognew_frame.spin": "local arrays (hub frames are not mirrored yet)",
     "flow_objects.spin": "local arrays (hub frames are not mirrored yet)",
     "flow_strings_moves.spin": "the address of a local variable (@local)",
     "assign_registers.spin": "ends 592 cycles early: a statement's cost is still off somewhere near its strcomp",

@@ -94,12 +94,13 @@ def test_translated_program_runs_from_the_written_package(tmp_path):
 
 
 def test_unsupported_constructs_name_the_construct_and_its_line(tmp_path):
-    src = tmp_path / "locals.spin"
-    src.write_text("PUB main | buf[4]\n  buf[0] := 1\n")
+    src = tmp_path / "video.spin"
+    src.write_text("PUB main | x\n  x := 1\n  waitvid(x, 0)\n")
     with pytest.raises(SpinError) as err:
         translate.translate_file(src, tmp_path / "out")
     text = str(err.value)
-    assert "locals.spin:1:" in text and "local array buf" in text
+    assert "video.spin:3:3: error: cannot translate waitvid" in text
+    assert not (tmp_path / "out").exists()
 
 
 def test_spin_errors_come_from_the_front_end(tmp_path):
