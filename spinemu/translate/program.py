@@ -166,6 +166,7 @@ class ObjectTranslator:
         self._strings = {}
         self._dat_counts = _dat_counts(unit, self.oc)
         self.frame_methods: set = set()
+        self._offsets = None
 
     # ------------------------------------------------------------------ lookups (for MethodTranslator)
     def unsupported(self, what: str, node):
@@ -205,6 +206,16 @@ class ObjectTranslator:
             table = {nid: offsets[i] for nid, i in mc.string_index.items()}
             self._strings[key(method.name)] = table
         return table[id(node)]
+
+    def offset_of(self, pos, method) -> int:
+        """Object offset of the first bytecode compiled for the statement at ``pos`` (else the method's start)."""
+        if self._offsets is None:
+            self._offsets = {}
+            for span in self.cobj.spans:
+                if span.pos is not None and span.data:
+                    self._offsets.setdefault((span.pos.line, span.pos.col), span.offset)
+        found = self._offsets.get((pos.line, pos.col))
+        return found if found is not None else self.infos[key(method.name)].offset
 
     def method_end(self, method) -> int:
         return self.infos[key(method.name)].end

@@ -72,6 +72,7 @@ class MethodTranslator(ExprTranslator):
         self.temps: set = set()
         self.pending_lookups: list = []
         self.last_data = b""
+        self.cur_pos = method.pos
         self.path = method.pos.path
 
     # ------------------------------------------------------------------ helpers for exprs.py
@@ -108,7 +109,8 @@ class MethodTranslator(ExprTranslator):
             fn()
             mc.code.mark(nxt)
             mc.code.mark(end)
-            spans, _ = mc.code.layout(0)
+            # laid out where the statement really is, so that address pushes get their real size
+            spans, _ = mc.code.layout(self.objt.offset_of(self.cur_pos, self.method))
         finally:
             mc.code, mc.loops = saved
         data = b"".join(s.data for s in spans if s.note != "string")
@@ -191,6 +193,7 @@ class MethodTranslator(ExprTranslator):
         return first, last
 
     def statement(self, st) -> tuple:
+        self.cur_pos = st.pos
         self.code.comments_before(st.pos.line)
         method = getattr(self, "s_" + type(st).__name__)
         return method(st)
@@ -413,7 +416,7 @@ class MethodTranslator(ExprTranslator):
 
     # ------------------------------------------------------------------ if
     def s_If(self, st) -> tuple:
-        first = None
+        first = top = None
         last = len(st.branches) - 1
         closers = 0
         for i, br in enumerate(st.branches):
@@ -432,6 +435,7 @@ class MethodTranslator(ExprTranslator):
                 branch_first = branch_first or ln
             word = "if" if i == 0 or hoisted else "elif"
             header = self.emit(f"{word} {c}:", br)
+            top = top or header
             branch_first = branch_first or header
             first = first or branch_first
             body_size = self.body_size(br.body)
@@ -449,7 +453,7 @@ class MethodTranslator(ExprTranslator):
             self.code.line("else:", st.else_pos.line if st.else_pos else None)
             self.block(st.else_body)
         self.code.indent -= closers
-        return first, first
+        return first, top
 
     # ------------------------------------------------------------------ case
     def s_Case(self, st) -> tuple:
@@ -465,13 +469,15 @@ class MethodTranslator(ExprTranslator):
         for text in pre_lines:
             ln = self.emit(text, st)
             first = first or ln
-        imm = 1 if self.objt.method_end(self.method) < 0x100 else 2
+        end = self.objt.offset_of(st.pos, self.method) + self.body_size([st])
+        imm = 1 if end < 0x100 else 2
         head = [Op(0x37 + imm, self.T.push_imm[imm])] + self.expr_ops(st.value)
         items = [it for it in st.items if it.values is not None]
         other = next((it for it in st.items if it.values is None), None)
+        jump_long = self.case_jumps(items, other)
         if self.loops:
             self.loops[-1].cases += 1
-        header = None
+        header = top = body_last = None
         try:
             for n, item in enumerate(items):
                 conds, ops = [], []
@@ -485,10 +491,11 @@ class MethodTranslator(ExprTranslator):
                             conds.append(f"{lo} <= {sel} <= {hi}")
                         else:
                             conds.append(f"spin.within({sel}, {lo}, {hi})")
-                        ops += self.expr_ops(v.low) + self.expr_ops(v.high) + [jump_op(self.T, "CASE_RANGE")]
+                        ops += self.expr_ops(v.low) + self.expr_ops(v.high) + \
+                            [jump_op(self.T, "CASE_RANGE", jump_long[id(v)])]
                     else:
                         conds.append(f"{sel} == {self.value(v)}")
-                        ops += self.expr_ops(v) + [jump_op(self.T, "CASE_VALUE")]
+                        ops += self.expr_ops(v) + [jump_op(self.T, "CASE_VALUE", jump_long[id(v)])]
                 if self.hoisted:
                     self.unsupported("a case value with side effects", item)
                 if all(c.startswith(f"{sel} == ") for c in conds) and len(conds) > 1:
@@ -497,6 +504,7 @@ class MethodTranslator(ExprTranslator):
                     cond = " or ".join(conds)
                 self.code.comments_before(item.pos.line)
                 header = self.emit(f"{'if' if n == 0 else 'elif'} {cond}:", item)
+                top = top or header
                 first = first or header
                 self.charge(header, "b", (head if n == 0 else []) + ops)
                 _, body_last = self.block(item.body)
@@ -515,7 +523,27 @@ class MethodTranslator(ExprTranslator):
         finally:
             if self.loops:
                 self.loops[-1].cases -= 1
-        return first, first
+        return first, top or body_last
+
+    def case_jumps(self, items, other) -> dict:
+        """For each case value: is its jump to the branch body the two-byte form (farther than 63 bytes)?
+
+        Layout (compiler/stmts.py): all compares, the OTHER body and CASE_DONE,
+        then each branch body followed by CASE_DONE.
+        """
+        compares = []                       # (value node, item index, bytes)
+        for k, item in enumerate(items):
+            for v in item.values:
+                exprs = [v.low, v.high] if isinstance(v, A.Range) else [v]
+                size = sum(self.size(lambda e=e: self.mc.expr(e)) for e in exprs) + 2
+                compares.append((v, k, size))
+        bodies = [self.body_size(item.body) + 1 for item in items]
+        other_size = (self.body_size(other.body) if other is not None else 0) + 1
+        result = {}
+        for i, (v, k, _size) in enumerate(compares):
+            after = sum(c[2] for c in compares[i + 1:]) + other_size + sum(bodies[:k])
+            result[id(v)] = after > 63
+        return result
 
     def statement_list(self, stmts):
         last = None
