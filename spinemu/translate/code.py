@@ -97,6 +97,10 @@ class Code:
         """Bytecodes from a register read on, paid by the read itself (see costs.split_read)."""
         self.charges.setdefault(line, {})["mid"] = list(ops)
 
+    def charge_each(self, line: int, runs) -> None:
+        """Charge one run before each operand of the ``or`` in the condition of the ``if`` on ``line``."""
+        self.charges.setdefault(line, {})["each"] = [list(r) for r in runs]
+
     def charge_table(self) -> dict:
         """``{line: (before, after, else[, test])}``, each ``(aligned, extra[, access])`` or None.
 
@@ -115,6 +119,9 @@ class Code:
             if mid:
                 b = row[0] or (None, 0)
                 row[0] = (b[0], b[1], b[2] if len(b) > 2 else None, chain(mid))
+            each = entry.get("each")
+            if each:
+                row[3] = tuple((chain(r), 0) for r in each)
             if not row[3]:
                 row.pop()
             if any(row):

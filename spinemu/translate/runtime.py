@@ -137,10 +137,10 @@ class Engine:
         try:
             try:
                 method(*args)
-            except Abort:
-                pass
-            # the top method returns (its frame drops the result) into the ROM's COGID, COGSTOP
-            add(drop_result_delta(self.T))
+                # the top method returns (its frame drops the result) into the ROM's COGID, COGSTOP
+                add(drop_result_delta(self.T))
+            except Abort as stop:
+                stop.charge(False)
             tick(self.epilogue)
             spin.long[c.dbase - 8] = c.id      # COGID's push lands on the return frame
             t = spin._fetched()

@@ -441,19 +441,44 @@ class Object:
 
 # ----------------------------------------------------------------------------- abort
 class Abort(Exception):
-    """Spin's ``abort value``: unwinds to the nearest ``\\call`` (:func:`trap`)."""
+    """Spin's ``abort value``: unwinds to the nearest ``\\call`` (:func:`trap`).
 
-    def __init__(self, value: int = 0):
+    ``bare``: Spin's ``abort`` without a value (it aborts with the method's result).
+    """
+
+    def __init__(self, value: int = 0, bare: bool = False):
         super().__init__(value)
         self.value = value
+        self.bare = bare
+
+    def charge(self, kept: bool) -> None:
+        """Pay what the ABORT bytecode costs beyond its one-frame price: the frames it unwound."""
+        if RT.T is None or RT.cog is None:
+            return
+        frames = 0
+        tb = self.__traceback__
+        while tb is not None:
+            f = tb.tb_frame
+            if f.f_code.co_name in f.f_globals.get("SPIN_FRAME_SIZES", ()):
+                frames += 1
+            tb = tb.tb_next
+        op = 0x30 if self.bare else 0x31
+        RT.cog.t += RT.T.returns(op, max(frames, 1), kept) - RT.T.returns(op, 1, True)
 
 
-def trap(method, *args) -> int:
-    """Spin's ``\\method(args)``: the method's result, or the value of an ``abort`` inside it."""
+def trap(method, *args, keep_result: bool = True) -> int:
+    """Spin's ``\\method(args)``: the method's result, or the value of an ``abort`` inside it.
+
+    ``keep_result=False``: the call is a statement (its value is dropped).
+    """
     try:
-        return method(*args)
+        value = method(*args)
     except Abort as stop:
+        stop.charge(keep_result)
         return stop.value
+    if not keep_result and RT.T is not None and RT.cog is not None:
+        RT.cog.t += RT.T.returns(0x32, 1, False) - RT.T.returns(0x32, 1, True)
+    return value
 
 
 # ----------------------------------------------------------------------------- cog registers

@@ -146,10 +146,11 @@ class MethodTranslator(ExprTranslator):
             fn()
             mc.code.mark(nxt)
             mc.code.mark(end)
-            _, n = mc.code.layout(0)
+            start = self.objt.offset_of(self.cur_pos, self.method)
+            _, n = mc.code.layout(start)
         finally:
             mc.code, mc.loops = saved
-        return n
+        return n - start
 
     def body_size(self, stmts) -> int:
         return self.size(lambda: self.mc.block(stmts))
@@ -227,6 +228,8 @@ class MethodTranslator(ExprTranslator):
             self.step(e.target, e.op, post=True)
         elif t is A.Unary and isinstance(e.operand, A.VARIABLE_NODES) and self.constant(e) is None:
             self.unary_assign(e)
+        elif t is A.AbortTrap:
+            main = self.expr(e).text[:-1] + ", keep_result=False)"
         else:
             main = self.expr(e).text
         ops = self.piece(lambda: self.mc.block([st]), run_params=self.run_params(st))
@@ -264,9 +267,10 @@ class MethodTranslator(ExprTranslator):
         return self.ending(st, main)
 
     def s_Abort(self, st) -> tuple:
-        value = self.value(st.value) if st.value is not None else (
-            self.result_text() if self.objt.uses_result(self.method) else "0")
-        return self.ending(st, f"raise spin.Abort({value})")
+        if st.value is not None:
+            return self.ending(st, f"raise spin.Abort({self.value(st.value)})")
+        value = self.result_text() if self.objt.uses_result(self.method) else "0"
+        return self.ending(st, f"raise spin.Abort({value}, bare=True)")
 
     def ending(self, st, main) -> tuple:
         ops = self.piece(lambda: self.mc.block([st]))
@@ -480,8 +484,9 @@ class MethodTranslator(ExprTranslator):
         header = top = body_last = None
         try:
             for n, item in enumerate(items):
-                conds, ops = [], []
+                conds, ops, per_value = [], [], []
                 for v in item.values:
+                    ops = []
                     if isinstance(v, A.Range):
                         lo, hi = self.value(v.low), self.value(v.high)
                         clo, chi = self.constant(v.low), self.constant(v.high)
@@ -496,17 +501,19 @@ class MethodTranslator(ExprTranslator):
                     else:
                         conds.append(f"{sel} == {self.value(v)}")
                         ops += self.expr_ops(v) + [jump_op(self.T, "CASE_VALUE", jump_long[id(v)])]
+                    per_value.append(ops)
                 if self.hoisted:
                     self.unsupported("a case value with side effects", item)
-                if all(c.startswith(f"{sel} == ") for c in conds) and len(conds) > 1:
-                    cond = f"{sel} in ({', '.join(c[len(sel) + 4:] for c in conds)})"
-                else:
-                    cond = " or ".join(conds)
+                cond = " or ".join(conds)
                 self.code.comments_before(item.pos.line)
                 header = self.emit(f"{'if' if n == 0 else 'elif'} {cond}:", item)
                 top = top or header
                 first = first or header
-                self.charge(header, "b", (head if n == 0 else []) + ops)
+                if len(per_value) == 1:
+                    self.charge(header, "b", (head if n == 0 else []) + per_value[0])
+                else:                       # each value is compared only if the ones before it failed
+                    self.charge(header, "b", head if n == 0 else [])
+                    self.code.charge_each(header, per_value)
                 _, body_last = self.block(item.body)
                 self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
             if other is not None:

@@ -66,7 +66,14 @@ def _weave_body(stmts: list, table: dict) -> list:
             out.append(s)
             continue
         before, after, other = row[:3]
-        if len(row) > 3 and isinstance(s, ast.While):
+        if len(row) > 3 and isinstance(s, ast.If) and isinstance(s.test, ast.BoolOp) \
+                and isinstance(s.test.op, ast.Or) and len(s.test.values) == len(row[3]):
+            # one charge before each alternative: ``if tick(a) or x == 1 or tick(b) or x == 2:``
+            values = []
+            for charge, value in zip(row[3], s.test.values):
+                values += [c.value for c in _charge_stmts(charge, s)] + [value]
+            s.test = ast.copy_location(ast.BoolOp(ast.Or(), values), s.test)
+        elif len(row) > 3 and isinstance(s, ast.While):
             # charged each time the loop's condition is evaluated: ``while tick(...) or cond:``
             charge = _charge_stmts(row[3], s)
             s.test = ast.copy_location(ast.BoolOp(ast.Or(), [c.value for c in charge] + [s.test]), s.test)
