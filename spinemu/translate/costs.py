@@ -166,6 +166,8 @@ def _kind(data, i, op) -> str:
     if op in (0x21, 0x28, 0x2C):
         return "cog"
     if op in (0x3D, 0x3E, 0x3F):
+        if not data[i + 1] & 0x10:
+            return ""               # $1E0-$1EF: the interpreter's own registers (COGID, the stack pointer)
         access = (data[i + 1] >> 5) & 3
         return "read" if access == 0 else "write"
     if op == 0x24:

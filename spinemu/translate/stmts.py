@@ -113,7 +113,7 @@ class MethodTranslator(ExprTranslator):
             spans, _ = mc.code.layout(self.objt.offset_of(self.cur_pos, self.method))
         finally:
             mc.code, mc.loops = saved
-        data = b"".join(s.data for s in spans if s.note != "string")
+        data = b"".join(s.data for s in spans if s.pos is not None or s.note != "string")   # not the pool
         self.last_data = data
         return price(self.T, data, **kw)
 

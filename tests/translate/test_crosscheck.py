@@ -25,12 +25,7 @@ BUDGETS = {"stepper_demo.spin": 120_000_000, "simple_stepper.spin": 60_000_000, 
 DEFAULT_BUDGET = 3_000_000
 
 #: programs the translator does not handle yet, and why
-KNOWN_GAPS = {
-    "flow_objects.spin": "local arrays (hub frames are not mirrored yet)",
-    "flow_strings_moves.spin": "the address of a local variable (@local)",
-    "assign_registers.spin": "ends 592 cycles early: a statement's cost is still off somewhere near its strcomp",
-    "misc.spin": "ends 848 cycles early: aborts through several frames are not charged per frame",
-}
+KNOWN_GAPS: dict = {}
 
 
 def spin_programs() -> list:
