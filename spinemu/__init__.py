@@ -1,10 +1,116 @@
 """spinemu: run, compile, trace and translate Parallax Propeller 1 Spin programs, and run BASIC Stamp 2 PBASIC.
 
-The public API is listed in ``__all__``; see docs/api.md.
+The public API (see docs/api.md):
+
+>>> import spinemu
+>>> result = spinemu.run_spin("spin_src/simple_stepper.spin", seconds=0.05)   # doctest: +SKIP
+>>> result.trace.edge_counts()                                                # doctest: +SKIP
+
+* :func:`compile_spin` - Spin source to a :class:`~spinemu.compiler.CompiledProgram`
+  (``.binary``, ``.eeprom()``, ``.listing()``), byte-identical with OpenSpin.
+* :class:`Chip` - the Propeller 1 emulator; :func:`run_spin` compiles (if needed) and runs.
+* :func:`run_bs2` - run a BASIC Stamp 2 PBASIC program.
+* :class:`PinTrace`, :func:`read_log` - pin traces and their files.
+* :func:`compare_traces`, :func:`decode_steps`, :func:`compare_stepper_traces`,
+  :func:`render_timeline`, :func:`plot_trace`, :func:`disassemble_image` - analysis.
+* :class:`SpinError` - every error about bad input.
+
+Everything but the error and trace types is imported on first use, so
+``import spinemu`` stays fast.
 """
+from __future__ import annotations
+
+import importlib
+from typing import Optional
+
 from .diagnostics import SpinError
-from .trace import PinTrace
+from .trace import PinTrace, read_log
 
 __version__ = "0.1.0"
 
-__all__ = ["SpinError", "PinTrace", "__version__"]
+__all__ = [
+    "SpinError", "PinTrace", "read_log", "compile_spin", "Chip", "run_spin", "run_bs2",
+    "compare_traces", "decode_steps", "compare_stepper_traces", "render_timeline", "plot_trace",
+    "disassemble_image", "__version__",
+]
+
+_LAZY = {
+    "Chip": ("spinemu.chip", "Chip"),
+    "compare_traces": ("spinemu.analysis.compare", "compare_traces"),
+    "decode_steps": ("spinemu.analysis.stepper", "decode_steps"),
+    "compare_stepper_traces": ("spinemu.analysis.stepper", "compare_stepper_traces"),
+    "render_timeline": ("spinemu.analysis.view", "render_timeline"),
+    "plot_trace": ("spinemu.analysis.plot", "plot_trace"),
+    "disassemble_image": ("spinemu.analysis.disasm", "disassemble_image"),
+}
+
+
+def __getattr__(name: str):
+    if name in _LAZY:
+        module, attr = _LAZY[name]
+        value = getattr(importlib.import_module(module), attr)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module 'spinemu' has no attribute {name!r}")
+
+
+def compile_spin(path, include_dirs=()):
+    """Compile a Spin program (and its OBJ children) to a Propeller image.
+
+    Args:
+        path: the top object's ``.spin`` file.
+        include_dirs: folders searched for OBJ files after the source's own folder.
+
+    Returns:
+        A ``CompiledProgram``: ``.binary`` (bytes), ``.eeprom()``, ``.listing()``,
+        ``.line_table``, ``.layout``.
+
+    Raises:
+        SpinError: with file, line and column, for any error in the source.
+    """
+    from .compiler import compile_file
+
+    return compile_file(str(path), include_dirs=list(include_dirs))
+
+
+def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] = None,
+             compat: str = "chip", inputs=None, include_dirs=()):
+    """Compile (if ``target`` is a ``.spin`` file) and run a Propeller program.
+
+    Args:
+        target: a ``.spin`` source, a ``.binary``/``.eeprom`` file, or image bytes.
+        cycles, seconds: where to stop (default: when every cog has stopped).
+        compat: ``"chip"`` (model the chip) or ``"spinsim"`` (the reference simulator's shortcuts).
+        inputs: what undriven pins read (``"pulldown"``, ``"pullup"`` or a stimulus).
+        include_dirs: OBJ search folders for a ``.spin`` target.
+
+    Returns:
+        The chip's ``RunResult``: ``.trace``, ``.hub``, ``.end_cycle``, ``.reason``,
+        ``.cog_events``, ``.warnings``.
+    """
+    from .chip import Chip
+    from .image import ImageHeader, load_image
+
+    if isinstance(target, (bytes, bytearray)):
+        image = load_image(bytes(target))
+    elif str(target).lower().endswith(".spin"):
+        image = compile_spin(target, include_dirs).binary
+    else:
+        with open(target, "rb") as f:
+            image = load_image(f.read(), str(target))
+    limit = cycles
+    if seconds is not None:
+        limit = int(round(seconds * (ImageHeader.parse(image).clkfreq or 80_000_000)))
+    return Chip(image, compat=compat, inputs=inputs).run(max_cycles=limit)
+
+
+def run_bs2(path, *, seconds: float = 10.0, timing: str = "exact", **options):
+    """Run a BASIC Stamp 2 PBASIC program (see :func:`spinemu.pbasic.run_file`).
+
+    Returns:
+        A PBASIC ``RunResult``: ``.trace`` (1 cycle = 1 us), ``.debug_output``,
+        ``.warnings``, ``.ram``, ``.eeprom``.
+    """
+    from .pbasic import run_file
+
+    return run_file(str(path), seconds=seconds, timing=timing, **options)

@@ -173,6 +173,37 @@ def _progress_callback(out: _Out, total: Optional[int], enabled: bool):
     return progress, update
 
 
+def _parse_stimulus(spec: Optional[str], pin_count: int) -> dict:
+    """``{pin: level}`` or ``{pin: [(seconds, level), ...]}`` from ``--input``."""
+    if not spec:
+        return {}
+    from .pbasic.stimulus import parse_input_spec
+
+    try:
+        parsed = parse_input_spec(spec)
+    except ValueError:
+        raise UsageError(f"--input: cannot read {spec!r}; expected e.g. 'P3=1' or 'P5=0@0,1@0.25'")
+    bad = [p for p in parsed if not 0 <= p < pin_count]
+    if bad:
+        raise UsageError(f"--input: pin {bad[0]} does not exist (pins are 0..{pin_count - 1})")
+    return parsed
+
+
+def _spin_inputs(args, clock_hz: int):
+    """The chip's input model: the pull mode, plus any --input waveforms on top."""
+    stim = _parse_stimulus(args.stimulus, 32)
+    if not stim:
+        return args.inputs
+    from .chip.inputs import PinStimulus
+
+    base = 0xFFFFFFFF if args.inputs == "pullup" else 0
+    changes = []
+    for pin, value in stim.items():
+        for seconds, level in ([(0.0, value)] if isinstance(value, int) else value):
+            changes.append((int(round(seconds * clock_hz)), 1 << pin, level << pin))
+    return PinStimulus(changes, initial=base)
+
+
 def _run_limit(args, clock_hz: int) -> Optional[int]:
     if args.cycles is not None:
         return args.cycles
@@ -212,8 +243,8 @@ def cmd_run(args, out: _Out) -> int:
     kind = _kind(args.target)
     if kind == "pbasic":
         return _run_pbasic(args, out)
-    if args.timing:
-        raise UsageError("--timing applies to BASIC Stamp programs (.bs2) only")
+    if args.timing or args.debug_in:
+        raise UsageError("--timing and --debug-in apply to BASIC Stamp programs (.bs2) only")
     image, source_map, prog = _load_target(args.target, args.include)
     from .image import ImageHeader
 
@@ -226,11 +257,11 @@ def cmd_run(args, out: _Out) -> int:
         from .translate import run_translated
 
         result = run_translated(args.target, include_dirs=list(args.include or ()), max_cycles=limit,
-                                compat=args.compat, inputs=args.inputs)
+                                compat=args.compat, inputs=_spin_inputs(args, clock))
     else:
         from .chip import Chip
 
-        chip = Chip(image, compat=args.compat, inputs=args.inputs, source_map=source_map)
+        chip = Chip(image, compat=args.compat, inputs=_spin_inputs(args, clock), source_map=source_map)
         progress, update = _progress_callback(out, limit, not args.no_progress)
         if progress is not None:
             with progress:
@@ -256,6 +287,11 @@ def cmd_run(args, out: _Out) -> int:
     return 0
 
 
+_PBASIC_REASONS = {"end": "END statement", "stop": "STOP statement", "time": "time limit",
+                   "input": "waiting for DEBUGIN/SERIN input that never came",
+                   "instructions": "instruction limit (a loop without PAUSE never lets time pass)"}
+
+
 def _run_pbasic(args, out: _Out) -> int:
     from .pbasic import run_file
 
@@ -267,7 +303,9 @@ def _run_pbasic(args, out: _Out) -> int:
         raise SpinError("no such file", path=args.target)
     seconds = args.seconds if args.seconds is not None else 10.0
     t0 = time.perf_counter()
-    result = run_file(args.target, seconds=seconds, timing=args.timing or "exact")
+    inputs = _parse_stimulus(args.stimulus, 16) or None
+    result = run_file(args.target, seconds=seconds, timing=args.timing or "exact", inputs=inputs,
+                      debug_in=args.debug_in)
     wall = time.perf_counter() - t0
     if result.debug_output:
         out.stdout.write(result.debug_output)
@@ -280,7 +318,7 @@ def _run_pbasic(args, out: _Out) -> int:
         trace = result.trace
         end = trace.end_cycle
         sim_s = end / trace.clock_hz
-        rows = [("ended", result.reason), ("timing", args.timing or "exact"),
+        rows = [("ended", _PBASIC_REASONS.get(result.reason, result.reason)), ("timing", args.timing or "exact"),
                 ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
         if args.trace:
             rows.append(("trace", f"{args.trace} ({len(trace.changes)} changes)"))
@@ -379,20 +417,24 @@ def cmd_trace(args, out: _Out) -> int:
     if action == "steps":
         from .analysis.stepper import decode_steps, render_steps
 
+        if not args.pins:
+            raise UsageError("trace steps needs --pins with the four coil pins, e.g. --pins 1..4")
         steps = decode_steps(trace, _pins(args.pins))
-        out.console.print(render_steps(steps, trace.clock_hz, limit=args.limit))
+        out.stdout.write(render_steps(steps, trace.clock_hz, limit=args.limit) + "\n")
         return 0
     raise UsageError(f"unknown trace action {action!r}")
 
 
 def cmd_sidebyside(args, out: _Out) -> int:
-    from .analysis.stepper import compare_step_sequences
+    from .analysis.stepper import compare_stepper_traces
 
     left = _load_trace(args.left, args.left_clock)
     right = _load_trace(args.right, args.right_clock)
-    report = compare_step_sequences(left, _pins(args.left_pins), right, _pins(args.right_pins))
-    out.console.print(report.render() if hasattr(report, "render") else str(report))
-    return 0 if getattr(report, "same_sequence", True) else 1
+    names = (os.path.basename(args.left), os.path.basename(args.right))
+    report = compare_stepper_traces(left, _pins(args.left_pins), right, _pins(args.right_pins),
+                                    steps=args.steps, names=names)
+    out.stdout.write(report.render() + "\n")
+    return 0 if report.same_sequence else 1
 
 
 # ----------------------------------------------------------------------------- parser
@@ -433,6 +475,10 @@ def build_parser() -> argparse.ArgumentParser:
                    help="chip: model the real chip (default); spinsim: reproduce the reference simulator's shortcuts")
     r.add_argument("--inputs", choices=["pulldown", "pullup"], default="pulldown",
                    help="what pins nobody drives read as (default: pulldown)")
+    r.add_argument("--input", dest="stimulus", metavar="SPEC",
+                   help="drive input pins: 'P3=1' holds P3 high; 'P5=0@0,1@0.25' sets P5 low at 0 s and high at "
+                        "0.25 s; several pins separated by ';'")
+    r.add_argument("--debug-in", metavar="TEXT", default="", help="BASIC Stamp only: characters DEBUGIN/SERIN will read")
     r.add_argument("--engine", choices=["bytecode", "python"], default="bytecode",
                    help="bytecode: interpret the compiled image (default); python: run the Spin-to-Python translation")
     r.add_argument("--timing", choices=["exact", "realistic"],
@@ -460,9 +506,11 @@ def build_parser() -> argparse.ArgumentParser:
 
     tr = sub.add_parser("trace", help="look at, compare, convert, plot and decode pin traces (log files)",
                         description="Tools for '<cycle> <dir> <out>' trace logs written by 'spinemu run --trace'.")
-    tr.add_argument("--clock", type=_positive_int, default=CLOCK_DEFAULT, help="cycles per second (default 80_000_000)")
+    clock = argparse.ArgumentParser(add_help=False)
+    clock.add_argument("--clock", type=_positive_int, default=CLOCK_DEFAULT,
+                       help="cycles per second of the log (default 80_000_000; BASIC Stamp logs: 1_000_000)")
     ts = tr.add_subparsers(dest="trace_action", metavar="ACTION")
-    tc = ts.add_parser("compare", help="same pin-state sequence? timing error?")
+    tc = ts.add_parser("compare", help="same pin-state sequence? timing error?", parents=[clock])
     tc.add_argument("reference")
     tc.add_argument("candidate")
     tc.add_argument("--until", type=_positive_int, metavar="CYCLE", help="ignore changes after this cycle")
@@ -470,7 +518,7 @@ def build_parser() -> argparse.ArgumentParser:
     tc.add_argument("--slack", type=int, default=16_000, help="cycles of fixed offset forgiven (default 16000)")
     for name, help_ in (("show", "timeline of the pins in the terminal"), ("plot", "waveform plot to an image file"),
                         ("convert", "convert a log to VCD"), ("steps", "decode stepper coil patterns into steps")):
-        a = ts.add_parser(name, help=help_)
+        a = ts.add_parser(name, help=help_, parents=[clock])
         a.add_argument("file")
         if name in ("plot", "convert"):
             a.add_argument("-o", "--output", required=True, metavar="FILE")
@@ -492,8 +540,10 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("right")
     s.add_argument("--left-pins", required=True, metavar="SPEC", help="coil pins of the left trace, e.g. 4..7")
     s.add_argument("--right-pins", required=True, metavar="SPEC", help="coil pins of the right trace, e.g. 1..4")
-    s.add_argument("--left-clock", type=_positive_int, default=CLOCK_DEFAULT)
+    s.add_argument("--left-clock", type=_positive_int, default=CLOCK_DEFAULT,
+                   help="cycles per second of the left log (BASIC Stamp logs: 1_000_000)")
     s.add_argument("--right-clock", type=_positive_int, default=CLOCK_DEFAULT)
+    s.add_argument("--steps", type=_positive_int, metavar="N", help="compare only the first N steps")
     s.set_defaults(func=cmd_sidebyside)
     return p
 

@@ -9,27 +9,30 @@ from __future__ import annotations
 
 # ----------------------------------------------------------------------------- files
 CANNOT_READ = "cannot read the file: {reason}"
+EMPTY_FILE = "the file is empty"
 BAD_ENCODING = "the file is not valid UTF-16: {detail}"
 OBJECT_NOT_FOUND = "cannot find object file '{name}' (looked in {where})"
 DAT_FILE_NOT_FOUND = "cannot find data file '{name}' (looked in {where})"
 OBJECT_RECURSION = "object '{name}' includes itself"
 
 # ----------------------------------------------------------------------------- lexer
-UNTERMINATED_BRACE = "this '{{' comment is never closed with '}}'"
-UNTERMINATED_DOC = "this '{{{{' comment is never closed with '}}}}'"
-STRAY_CLOSE_BRACE = "'}}' without a '{{' to open a comment"
+UNTERMINATED_BRACE = "the '{{' comment opened on line {line} is never closed with '}}'"
+UNTERMINATED_DOC = "the '{{{{' comment opened on line {line} is never closed with '}}}}'"
+STRAY_CLOSE_BRACE = "'}' without a '{' to open a comment"
 UNTERMINATED_STRING = "this string has no closing '\"'"
 BAD_NUMBER = "'{text}' is not a valid number"
 BAD_CHARACTER = "unexpected character '{ch}'"
 DESIGNATOR_NOT_FIRST = "'{word}' starts a section and must be in the first column"
 HERE_OUTSIDE_DAT = "'$' (the current address) can only be used in a DAT section"
+LOCAL_LABEL_OUTSIDE_DAT = "':{name}' is a DAT local label; Spin code cannot use it"
 
 # ----------------------------------------------------------------------------- parser
+DEV_SECTION = "DEV sections (precompile/archive) are not supported"
 UNEXPECTED = "unexpected {found}{expected}"
 EXPECTED_TAIL = "; expected {what}"
+SINGLE_EQUAL = "'=' only defines constants (in CON); use ':=' to assign or '==' to compare"
 ELSE_COLUMN = "'{word}' must line up with its '{head}' (column {col})"
 POST_CONDITION_COLUMN = "'{word}' must line up with its 'repeat' (column {col})"
-INDENT_UNEXPECTED = "this line is indented more than the line above it"
 EMPTY_STRING = "empty string"
 
 #: What to call each token kind in messages ("expected an expression").
@@ -63,6 +66,7 @@ FOUND_WORDS = {
 }
 #: Token kinds grouped under one phrase in "expected ..." lists.
 EXPECTED_GROUPS = [
+    ({"IF", "IFNOT", "REPEAT", "CASE", "RETURN", "ABORT", "NEXT", "QUIT"}, "a statement"),
     ({"NAME", "NUMBER", "FLOAT", "STRING", "LPAR", "MINUS", "BANG", "AT", "KCONST"}, "an expression"),
     ({"ASSIGN", "OPASSIGN"}, "an assignment operator"),
     ({"EQEQ", "NE", "LT", "GT", "LE", "GE", "PLUS", "STAR", "SLASH", "AMP"}, "an operator"),
@@ -80,7 +84,7 @@ UNKNOWN_METHOD_IN_OBJECT = "object '{obj}' has no public method '{name}'"
 UNKNOWN_CONSTANT_IN_OBJECT = "object '{obj}' has no constant '{name}'"
 WRONG_ARG_COUNT = "'{name}' takes {expected} parameter{s}, not {got}"
 RESERVED_NAME = "'{name}' is a reserved word"
-NO_PUB = "the top object has no PUB method to start"
+NO_PUB = "no PUB method: every object needs one (a program starts with the top object's first)"
 NO_METHODS_OR_DAT = "this object has no methods"
 
 # ----------------------------------------------------------------------------- constants
@@ -100,16 +104,21 @@ NEEDS_VALUE = "'{name}' does not return a value here"
 NEXT_OUTSIDE_REPEAT = "'{word}' is only allowed inside a repeat loop"
 STRING_TOO_LONG = "strings in expressions must be one character; use string(...)"
 ADDRESS_OF_NON_VARIABLE = "'@' needs a variable or a DAT label"
-RANGE_NOT_ALLOWED = "a range (..) is only allowed with a register (dira, outa...)"
+RANGE_NOT_ALLOWED = "a range (..) is only allowed in case values and lookup lists"
 METHOD_AS_VALUE = "method '{name}' used where a value is expected"
-BAD_STRING_ARG = "string() needs constants and strings"
+STRING_CHARACTER_RANGE = "string() characters must be 1 to 255 (strings end with a 0 byte already)"
+STRING_NOT_ALLOWED = "string() is not allowed here (this expression is compiled twice)"
+OTHER_NOT_LAST = "'other' must be the last case"
 LOOKUP_EMPTY = "lookup needs at least one value"
 CASE_WITHOUT_MATCH = "case needs at least one match line"
 TOO_MANY_PARAMS = "a method can have at most 255 parameters and locals"
-FILE_TOO_BIG = "the program needs {size} bytes, more than the 32 KB of hub RAM"
+FILE_TOO_BIG = "the program, its variables and its stack exceed the 32 KB hub RAM by {longs} longs"
+STACK_FREE_TOO_BIG = "_stack and _free must add up to less than 8192 longs"
+TOO_MUCH_VAR = "too much VAR space (more than 32 KB)"
+OBJECT_COUNT = "an object array must have 1 to 255 elements"
 OBJ_TOO_BIG = "object '{name}' is too big ({size} bytes)"
 JUMP_TOO_FAR = "this block is too long to jump over"
-TOO_MANY_METHODS = "an object can have at most 255 methods and objects"
+TOO_MANY_METHODS = "an object can have at most 255 methods and object instances together"
 BAD_BUILTIN_USE = "'{name}' cannot be used like this here (wrong place or wrong number of parameters)"
 COGNEW_SPIN_OBJECT = "cognew/coginit can only start a method of this object"
 BAD_COGNEW = "cognew needs a method call or an address and a parameter"

@@ -33,6 +33,7 @@ from ..image import BOOT_FRAME, HUB_SIZE, ImageHeader, load_image
 from ..trace import PinTrace
 from .cog import PIN_WAIT, RUNNING, STOPPED, IDLE_PASM, Cog
 from .control import CogStopped, RebootRequested, Reschedule
+from .fastforward import LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
 from .registers import Registers
 from .rom import INTERPRETER_ENTRY, build_rom
 from .spin import build_handlers
@@ -137,6 +138,8 @@ class Chip:
         #: ``(cog, pc, op, t_start, t_fetched, t_next, stack_before, stack_after)``
         #: (the instrumented loop; used by the timing derivation and debugging)
         self.recorder = None
+        self._tracking = None       # the learning interpreter (fastforward.py), built on first use
+        self._ff_loops = self._ff_skipped = 0
         self.last_target = None     # the target value of the latest assignment operator
         self.now = 0
 
@@ -343,15 +346,18 @@ class Chip:
                          list(self.warnings), stats)
 
     def _ff_stats(self) -> dict:
-        return {}
+        return {"fast_forward": self.fast_forward, "busy_loops_learned": self._ff_loops,
+                "bytecodes_skipped": self._ff_skipped}
 
     def _boot(self) -> None:
         self._pin_waiters = []
         self._video_ready = [0] * 8
         cog0 = self.cogs[0]
         # The boot loader starts the interpreter in cog 0 with PAR = $0004
-        # (pbase, vbase, dbase, pcurr, dcurr at $0006..$000E).
-        t_first = 0 if self.spinsim else COG_LOAD_CYCLES
+        # (pbase, vbase, dbase, pcurr, dcurr at $0006..$000E).  Cycle 0 is the
+        # first instruction of that interpreter in both modes: the boot
+        # loader's own time (reading the EEPROM, loading cog 0) is not counted.
+        t_first = 0
         self.start_spin_cog(cog0, 0x0004, t_first, None)
         self.cog_events[-1] = (t_first, 0, "start", f"Spin method at ${cog0.pc:04X} (boot)")
 
@@ -385,17 +391,98 @@ class Chip:
                 nxt = self.inputs.next_change(c.t)
                 if nxt is not None and nxt < until:
                     until = max(nxt, c.t + 1)
+            self.now = c.t
             try:
-                if self.recorder is None:
+                if self.recorder is not None:
+                    self._run_spin_traced(c, until)
+                elif not self.fast_forward:
                     self._run_spin(c, until)
                 else:
-                    self._run_spin_traced(c, until)
+                    self._run_with_fast_forward(c, until)
             except RebootRequested:
                 self.now = c.t
                 return "reboot"
             if progress is not None and self.now >= next_report:
                 progress(self.now)
                 next_report = self.now + 10_000_000
+
+    def _run_with_fast_forward(self, c: Cog, until: int) -> None:
+        """Run ``c`` until ``until``, skipping iterations of a learned busy loop (see fastforward.py)."""
+        busy = c.busy
+        if busy is None:
+            if c.bytecodes - c.learn_mark > c.learn_after and until - c.t > LEARN_HORIZON:
+                self._learn(c, until)
+                if c.busy is None or c.state != RUNNING:
+                    self._run_spin(c, until)
+                    return
+                busy = c.busy
+            else:
+                self._run_spin(c, until)
+                return
+        if c.pc == busy.head:
+            if not busy.still_valid(self, c):
+                c.busy = None                   # learn again at once: often only a value changed
+                c.learn_after = 0
+                c.learn_mark = c.bytecodes
+                self._run_spin(c, until)
+                return
+            k = (until - c.t) // busy.period
+            if k > 0:
+                c.t += k * busy.period
+                c.bytecodes += k * busy.bytecodes
+                busy.skipped += k * busy.bytecodes
+                self._ff_skipped += k * busy.bytecodes
+        self._run_spin_to(c, until, busy.head)
+
+    def _learn(self, c: Cog, until: int) -> None:
+        if self._tracking is None:
+            self._tracking = tracking_handlers(self, self.timing)
+        handlers, log = self._tracking
+        try:
+            loop = learn_busy_loop(self, c, handlers, log, until)
+        finally:
+            log.clear()
+        c.learn_mark = c.bytecodes
+        if loop is None:
+            c.learn_after = min(max(2 * c.learn_after, LEARN_AFTER), 1 << 20)
+        else:
+            c.busy = loop
+            self._ff_loops += 1
+
+    def _run_spin_to(self, c: Cog, limit: int, stop_pc: int) -> None:
+        """:meth:`_run_spin`, but stop when the cog comes back to ``stop_pc`` (a loop head)."""
+        mem = self.mem
+        H = self.handlers
+        P = c.hub_phase
+        t = c.t
+        n = 0
+        tf = t
+        try:
+            while t < limit:
+                pc = c.pc
+                op = mem[pc]
+                c.pc = pc + 1
+                tf = t + 12
+                tf += (P - tf) & 15
+                t = tf + H[op](c, op, tf)
+                n += 1
+                if c.pc == stop_pc:
+                    break
+        except Reschedule as e:
+            t = tf + e.rest
+            n += 1
+        except CogStopped:
+            c.bytecodes += n + 1
+            return
+        except RebootRequested:
+            c.bytecodes += n + 1
+            c.t = tf
+            raise
+        except IndexError:
+            raise self.fault(c, c.pc - 1, "stack or address out of hub range") from None
+        c.bytecodes += n
+        if c.state == RUNNING:
+            c.t = t
 
     def _run_spin(self, c: Cog, limit: int) -> None:
         """Run cog ``c``'s bytecodes while it starts them before ``limit``. (Hot loop.)

@@ -38,6 +38,8 @@ class Cog:
         "pin_wait",
         # statistics
         "bytecodes",
+        # fast-forward: the learned busy loop, and when to try learning next
+        "busy", "learn_mark", "learn_after",
     )
 
     def __init__(self, cog_id: int):
@@ -48,6 +50,9 @@ class Cog:
         self.hub_phase = 8
         self.started_at = 0
         self.bytecodes = 0
+        self.busy = None
+        self.learn_mark = 0
+        self.learn_after = 0
         self.reset_registers()
 
     def reset_registers(self) -> None:

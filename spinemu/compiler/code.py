@@ -16,7 +16,9 @@ Sizing follows what OpenSpin 1.00.81 does (observed with probe programs):
   is below 256; a backward jump is sized from its exact distance;
 * this stops when a pass changes no size.  Sizes only ever shrink, so a
   forward jump that needs exactly 63 stays long.
-* string addresses always use the 2-byte offset form (``87 80 xx``).
+* string addresses always use the 2-byte offset form (``87 80 xx``);
+* the string pool is in source order (an ``other`` case block is compiled
+  before the other blocks but its strings keep their place).
 """
 from __future__ import annotations
 
@@ -80,11 +82,16 @@ class CodeBuffer:
         """Push the object address of ``target`` (PUSH_IMM1 or PUSH_IMM2)."""
         self.items.append([_ADDR, b"", self.pos, note, target, 2])
 
-    def push_string(self, data: bytes, note: str = "") -> None:
-        """Push the address of a zero-terminated string kept in the method's pool."""
-        offset = sum(len(s) for s in self.strings)
+    def push_string(self, data: bytes, note: str = "", where=None) -> None:
+        """Push the address of a zero-terminated string kept in the method's pool.
+
+        Args:
+            where: the string's source position (orders the pool).
+        """
+        index = len(self.strings)
         self.strings.append(data + b"\0")
-        self.items.append([_STR, b"", self.pos, note, offset])
+        self._string_index[index] = (where.line, where.col) if where is not None else (0, index)
+        self.items.append([_STR, b"", self.pos, note, index])
 
     def mark(self, label: Label) -> None:
         self.items.append([_MARK, b"", self.pos, "", label])
@@ -144,7 +151,12 @@ class CodeBuffer:
     def _spans(self, start: int, labels: dict, code_end: int) -> tuple[list, int]:
         spans = []
         addr = start
-        pool = code_end
+        order = sorted(range(len(self.strings)), key=lambda i: self._string_index[i])
+        pool_offset = {}
+        at = code_end
+        for i in order:
+            pool_offset[i] = at
+            at += len(self.strings[i])
         for item in self.items:
             kind = item[0]
             if kind == _MARK:
@@ -159,12 +171,13 @@ class CodeBuffer:
                 value = labels[item[4]]
                 data = bytes((0x38, value)) if item[5] == 1 else bytes((0x39, value >> 8, value & 0xFF))
             else:  # _STR
-                value = pool + item[4]
+                value = pool_offset[item[4]]
                 data = bytes((0x87, 0x80 | (value >> 8), value & 0xFF))
             if data:
                 spans.append(Span(addr, data, item[2], item[3]))
             addr += len(data)
-        for s in self.strings:
+        for i in order:
+            s = self.strings[i]
             spans.append(Span(addr, s, None, "string"))
             addr += len(s)
         return spans, addr

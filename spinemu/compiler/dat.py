@@ -14,7 +14,8 @@ computes values.  Layout rules (Propeller Manual, DAT; observed on OpenSpin
 * in expressions a label means its cog address (longs from the last
   ``org``); ``@label`` its offset in the object; ``$`` the current cog address;
 * ``res n`` reserves cog longs without hub bytes; ``fit n`` checks the cog
-  address against ``n`` (default $1F0); ``file "x"`` includes a binary file;
+  address against ``n`` (default $1F0); ``org``, ``res`` and ``fit`` align
+  to a long; ``file "x"`` includes a binary file;
 * ``:name`` labels are local to the previous plain label.
 """
 from __future__ import annotations
@@ -24,8 +25,10 @@ from dataclasses import dataclass
 from typing import Optional
 
 from .. import messages as msg
+from ..bytecode import REGISTER_NAMES
 from ..frontend.ast import (
-    AddrOf, Data, DatFile, Fit, Here, Instruction, LocalLabel, NameRef, ObjConst, Org, Res, Str, key,
+    AddrOf, Data, DatFile, Fit, Here, Instruction, LocalLabel, NameRef, ObjConst, Org, RegRef, Res, Str,
+    key,
 )
 from ..frontend.constants import Const, ConstError, NotConstant, evaluate, to_signed
 
@@ -46,10 +49,16 @@ class DatSymbol:
 
 @dataclass
 class DatResult:
+    """DatResul: see the module docstring."""
+
     data: bytes
     symbols: dict        # key -> DatSymbol (plain labels)
     locals: dict         # (plain key, local key) -> DatSymbol
     spans: list          # [(offset, bytes, pos, note)]
+
+
+#: register name (lower case) -> cog address, for PASM operands
+REGISTER_ADDRESSES = {name.lower(): addr for addr, name in REGISTER_NAMES.items()}
 
 
 class _Abort(Exception):
@@ -99,6 +108,8 @@ class _Assembler:
                 raise NotConstant(n)
             if isinstance(n, ObjConst):
                 return self.child_const(n)
+            if isinstance(n, RegRef) and n.bit is None:
+                return Const(REGISTER_ADDRESSES[n.name])
             raise NotConstant(n)
         return evaluate(node, resolve, self.char_bytes)
 
@@ -141,7 +152,7 @@ class _Assembler:
             try:
                 if isinstance(body, Data):
                     hub = _align(hub, body.size, out)
-                elif isinstance(body, (Instruction, Org, Res)):
+                elif isinstance(body, (Instruction, Org, Res, Fit)):
                     hub = _align(hub, 4, out)
                 cog_bytes = org_cog * 4 + (hub - org_hub) + res_extra * 4
                 cog_here = cog_bytes >> 2
@@ -170,11 +181,13 @@ class _Assembler:
                         spans.append((hub, data, line.pos, body.mnemonic))
                     hub += 4
                 elif isinstance(body, Org):
+                    size_state = 4
                     value = self.const_now(body.value, cog_here, scope) if body.value is not None else 0
                     if value > 0x1F0:
                         self.report(msg.ORG_RANGE.format(value=value), body.value)
                     org_hub, org_cog, res_extra = hub, value, 0
                 elif isinstance(body, Res):
+                    size_state = 4
                     count = self.const_now(body.value, cog_here, scope) if body.value is not None else 1
                     res_extra += count
                 elif isinstance(body, Fit):
@@ -194,9 +207,6 @@ class _Assembler:
     def define(self, label, scope, size, hub, cog, reserved) -> None:
         sym = DatSymbol(label.name, size, hub, cog, reserved, label.pos)
         if label.local:
-            if scope is None:
-                self.report(msg.LOCAL_LABEL_WITHOUT_GLOBAL.format(name=label.name), label)
-                return
             k = (scope, key(label.name))
             table = self.locals
         else:
@@ -219,7 +229,12 @@ class _Assembler:
                 pass  # OpenSpin accepts larger overrides: the item is just bigger
             count = 1
             if item.count is not None:
-                count = self.const_now(item.count, cog_here, scope)
+                count = to_signed(self.const_now(item.count, cog_here, scope))
+                if count < 0:
+                    count = 0        # OpenSpin stores nothing for a negative count
+                elif count > 0x8000:
+                    self.report(msg.BAD_COUNT.format(low=0, high="$8000", value=count), item.count)
+                    raise _Abort()
             if isinstance(item.value, Str):
                 values = list(self.char_bytes(item.value.text))
             elif emit:

@@ -19,9 +19,8 @@ from __future__ import annotations
 from ..bytecode import BY_MNEMONIC, MATH_BY_SYMBOL, REGISTER_NAMES, encode_unsigned, mask_code
 from .. import messages as msg
 from ..frontend.ast import (
-    AbortTrap, AddrOf, Assign, Binary, Builtin, Call, Float, KConst, Lookup, MemberRef, MemRef,
-    NameRef, Number, ObjAddr, ObjCall, ObjConst, Paren, PostOp, PreOp, Range, RegRef, ResultRef,
-    SprRef, Str, Unary, key,
+    Assign, Builtin, Call, Float, KConst, MemberRef, MemRef, NameRef, Number, ObjCall, ObjConst, Paren,
+    Range, RegRef, ResultRef, SprRef, Str, Unary, key,
 )
 from ..frontend.constants import Const, ConstError, NotConstant, evaluate
 from .code import Label
@@ -151,11 +150,19 @@ class ExprCompiler:
         if c is not None:
             self.push_const(c.bits, "constant")
             return
-        method = getattr(self, "x_" + type(node).__name__, None)
-        if method is None:
-            self.error(msg.NOT_A_VARIABLE.format(name=type(node).__name__), node)
-            raise CompileFailure()
-        method(node)
+        getattr(self, "x_" + type(node).__name__)(node)
+
+    def x_Here(self, node) -> None:
+        self.error(msg.HERE_OUTSIDE_DAT, node)
+        raise CompileFailure()
+
+    def x_LocalLabel(self, node) -> None:
+        self.error(msg.LOCAL_LABEL_OUTSIDE_DAT.format(name=node.name), node)
+        raise CompileFailure()
+
+    def x_Range(self, node) -> None:
+        self.error(msg.RANGE_NOT_ALLOWED, node)
+        raise CompileFailure()
 
     def x_Paren(self, node) -> None:
         self.expr(node.expr)
@@ -425,10 +432,15 @@ class ExprCompiler:
             data = bytearray()
             for a in args:
                 if isinstance(a, Str):
-                    data += self.obj.char_bytes(a.text)
+                    chunk = self.obj.char_bytes(a.text)
                 else:
-                    data.append(self.fold(a).bits & 0xFF)
-            code.push_string(bytes(data), "string")
+                    value = self.fold(a).bits
+                    chunk = bytes((value & 0xFF,)) if 0 < value < 256 else b""
+                if not chunk or 0 in chunk:
+                    self.error(msg.STRING_CHARACTER_RANGE, a)
+                    raise CompileFailure()
+                data += chunk
+            code.push_string(bytes(data), "string", node.pos)
             return
         if name in _FOLDED_BUILTINS:
             if not want or len(args) != 1:
@@ -478,10 +490,7 @@ class ExprCompiler:
                 # the cog id goes into the frame RUN just built (long[dcurr][-4])
                 self.code.emit(bytes((_OP["REG"], 0x8F)) + push_const_bytes(0xFFFFFFFC) +
                                bytes((_mem_op(POP, 4, "MEM", True),)), "cog id")
-        elif isinstance(target, ObjCall):
-            self.error(msg.COGNEW_SPIN_OBJECT, target)
-            raise CompileFailure()
-        else:
+        else:  # an address (PASM); an object's method is called and its result used
             if new:
                 self.code.emit(0x34, "next free cog")
             else:

@@ -98,7 +98,10 @@ def clock_settings(unit, errors: list) -> tuple[int, int]:
     if mode & 0x002:
         return 20_000, reg
     mult = (mode >> 6) or 1   # PLL1X..PLL16X are the bits of the factor
-    if freq_c is not None and xin_c is None:
+    if freq_c is not None and xin_c is not None:
+        bad("give either _clkfreq or _xinfreq, not both", "_clkfreq")
+        return 12_000_000, reg
+    if freq_c is not None:
         return freq_c.bits, reg
     if xin_c is None:
         bad("a crystal or input clock needs _xinfreq or _clkfreq", "_clkmode")
@@ -140,7 +143,9 @@ def link(top, compiled: dict, errors: list):
     dbase = vbase + var_total + 8
     first = top.methods[0] if top.methods else None
     if first is None or not first.public:
-        errors.append(Diagnostic(msg.NO_PUB, top.unit.path))
+        source = top.unit.spin.source
+        line, col = source.end_position()
+        errors.append(Diagnostic(msg.NO_PUB, source.path, line, col, source.line(line)))
         return bytes(image), placed, addr, var_total
     pcurr = HEADER_SIZE + first.offset
     dcurr = dbase + 4 + 4 * first.nparams + first.locals_size
@@ -148,6 +153,25 @@ def link(top, compiled: dict, errors: list):
     header = ImageHeader(clkfreq, clkmode, 0, HEADER_SIZE, vbase, dbase, pcurr, dcurr)
     image[0:HEADER_SIZE] = header.pack()
     image[5] = image_checksum(bytes(image))
-    if dcurr > 0x8000 or vbase > 0x8000:
-        errors.append(Diagnostic(msg.FILE_TOO_BIG.format(size=max(dcurr, vbase)), top.unit.path))
+    memory_check(top.unit, vbase, var_total, errors)
     return bytes(image), placed, addr, var_total
+
+
+def memory_check(unit, vbase: int, var_total: int, errors: list) -> None:
+    """Program, VAR, stack (_stack longs, 16 if not given) and _free must fit in hub RAM.
+
+    OpenSpin 1.00.81 counts ``vbase/4 + VAR/4 + _stack + _free + 1`` longs
+    against 8192 (observed with probes).
+    """
+    stack = unit.constants.get("_stack")
+    free = unit.constants.get("_free")
+    stack_longs = stack.bits if stack is not None else 16
+    free_longs = free.bits if free is not None else 0
+    if stack_longs + free_longs > 8192:
+        node = unit.constants.values.get("_stack", unit.constants.values.get("_free"))[1]
+        errors.append(Diagnostic(msg.STACK_FREE_TOO_BIG, node.pos.path, node.pos.line, node.pos.col,
+                                 unit.spin.source.line(node.pos.line)))
+        return
+    over = (vbase + 3) // 4 + var_total // 4 + stack_longs + free_longs + 1 - 8192
+    if over > 0:
+        errors.append(Diagnostic(msg.FILE_TOO_BIG.format(longs=over), unit.spin.source.path))

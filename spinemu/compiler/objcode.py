@@ -16,7 +16,7 @@ from typing import Optional
 
 from ..diagnostics import Diagnostic
 from .. import messages as msg
-from ..frontend.ast import NameRef, ObjConst, key
+from ..frontend.ast import AddrOf, NameRef, ObjConst, key
 from ..frontend.constants import Const, ConstError, NotConstant, Undefined, evaluate
 from .code import Span
 from .dat import DatSymbol, assemble_dat
@@ -28,6 +28,8 @@ __all__ = ["CompiledObject", "MethodInfo", "ObjectCompiler"]
 
 @dataclass
 class MethodInfo:
+    """MethodInf: see the module docstring."""
+
     name: str
     index: int
     public: bool
@@ -84,15 +86,28 @@ class ObjectCompiler:
         pos = node.pos
         self.errors.append(Diagnostic(message, pos.path, pos.line, pos.col, self.source.line(pos.line)))
 
+    def error_at(self, message: str, pos) -> None:
+        self.errors.append(Diagnostic(message, pos.path, pos.line, pos.col, self.source.line(pos.line)))
+
     def const(self, name: str) -> Optional[Const]:
         return self.unit.constants.get(name)
 
     def resolve_const(self, node):
+        """Constants for ``constant()`` and counts; a DAT label (with or without @) is its offset."""
+        if isinstance(node, AddrOf) and isinstance(node.target, NameRef) and node.target.index is None:
+            node = node.target
+            if not isinstance(self.symbols.get(node.name), DatSymbol):
+                return None
         if isinstance(node, NameRef) and node.index is None:
             c = self.const(node.name)
-            if c is None and self.symbols.get(node.name) is None:
+            if c is not None:
+                return c
+            sym = self.symbols.get(node.name)
+            if sym is None:
                 raise Undefined(node.name, node)
-            return c
+            if isinstance(sym, DatSymbol):
+                return Const(sym.offset)
+            return None
         if isinstance(node, ObjConst):
             return self.child_const(node)
         return None
@@ -136,6 +151,9 @@ class ObjectCompiler:
         syms = self.symbols
         report = lambda message, node: self.error(message, node)
         methods = method_order(spin.methods)
+        if not methods or not methods[0].public:
+            line, col = self.source.end_position()
+            self.errors.append(Diagnostic(msg.NO_PUB, self.source.path, line, col, self.source.line(line)))
         for i, m in enumerate(methods):
             sym = MethodSymbol(m.name, i + 1, m.public, m, len(m.params))
             if syms.add(m.name, sym, m, report):
@@ -144,13 +162,20 @@ class ObjectCompiler:
         index = len(methods) + 1
         for decl, child in self.unit.children:
             count = 1 if decl.count is None else self.count_of(decl.count)
+            if not 1 <= count <= 255:
+                self.error(msg.OBJECT_COUNT, decl.count)
+                count = 1
             osym = ObjSymbol(decl.name, index, count, child, decl)
             syms.add(decl.name, osym, decl, report)
             syms.objects.append(osym)
             for _ in range(count):
                 instances.append((osym, child))
             index += count
+        if len(methods) + len(instances) > 255:
+            self.error(msg.TOO_MANY_METHODS, spin.objs[-1] if spin.objs else methods[-1])
         var_syms, var_size = layout_vars(spin.vars, self.count_of)
+        if var_size > 0x8000:
+            self.error(msg.TOO_MUCH_VAR, spin.vars[-1])
         for v in var_syms:
             syms.add(v.name, v, v, report)
         syms.vars, syms.var_size = var_syms, var_size
@@ -166,13 +191,17 @@ class ObjectCompiler:
         infos = []
         code_bytes = bytearray()
         for sym in syms.methods:
+            errors_before = len(self.errors)
             mc = MethodCompiler(self, sym.node)
             buf = mc.compile()
-            try:
-                mspans, end = buf.layout(offset)
-            except ValueError:
-                self.error(msg.JUMP_TOO_FAR, sym.node)
-                mspans, end = [], offset
+            if len(self.errors) > errors_before:
+                mspans, end = [], offset        # no image is made anyway
+            else:
+                try:
+                    mspans, end = buf.layout(offset)
+                except ValueError:
+                    self.error(msg.JUMP_TOO_FAR, sym.node)
+                    mspans, end = [], offset
             infos.append(MethodInfo(sym.name, sym.index, sym.public, offset, end, mc.locals_size,
                                     sym.nparams, sym.node.pos))
             for s in mspans:

@@ -2,7 +2,7 @@
 
 >>> prog = compile_source("PUB main\\n  outa[0]~~\\n")
 >>> prog.binary[:4].hex(), len(prog.binary)
-('001bb700', 28)
+('001bb700', 32)
 """
 from __future__ import annotations
 
@@ -14,6 +14,7 @@ from typing import Optional
 
 from ..diagnostics import CompileError, Diagnostic
 from ..frontend.objects import load_program
+from ..frontend.source import SourceText
 from ..image import to_eeprom
 from .link import link, total_var
 from .listing import format_listing
@@ -188,14 +189,12 @@ def compile_source(text: str, name: str = "main.spin", include_dirs=(),
                    files: Optional[dict] = None) -> CompiledProgram:
     """Compile Spin source text (and optional extra files ``{name: text}`` for its OBJ lines).
 
-    The text is written to a temporary folder so that object files resolve
-    as they would on disk; ``include_dirs`` are searched after it.
+    Diagnostics name the top file ``name``.  OBJ files are looked for among
+    ``files`` (written to a temporary folder), then in ``include_dirs``.
     """
     with tempfile.TemporaryDirectory(prefix="spinemu-") as tmp:
         for fname, body in (files or {}).items():
             with open(os.path.join(tmp, fname), "w", encoding="utf-8") as fh:
                 fh.write(body)
-        path = os.path.join(tmp, name)
-        with open(path, "w", encoding="utf-8") as fh:
-            fh.write(text)
-        return compile_file(path, include_dirs)
+        source = SourceText(name, text)
+        return _compile_unit(load_program(os.path.join(tmp, os.path.basename(name)), include_dirs, source))

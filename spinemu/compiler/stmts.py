@@ -21,10 +21,10 @@ from __future__ import annotations
 from .. import messages as msg
 from ..bytecode import BY_MNEMONIC, MATH_BY_SYMBOL
 from ..frontend.ast import (
-    Abort, AbortTrap, Assign, Builtin, Call, Case, ExprStmt, If, NameRef, Next, ObjCall, Paren,
-    PostOp, PreOp, Quit, Range, RepeatCount, RepeatForever, RepeatFrom, RepeatWhile, Return, Unary,
-    VARIABLE_NODES, key,
+    VARIABLE_NODES, AbortTrap, Assign, Builtin, Call, Case, If, NameRef, ObjCall, PostOp, PreOp, Range,
+    RepeatFrom, Str, Unary, key,
 )
+from ..frontend.source import Pos
 from .code import CodeBuffer, Label
 from .exprs import USING, CompileFailure, ExprCompiler, push_const_bytes
 from .symbols import MethodSymbol, frame_locals
@@ -57,8 +57,15 @@ class MethodCompiler(ExprCompiler):
         self.obj = obj
         self.method = method
         self.code = CodeBuffer()
-        self.frame, self.locals_size = frame_locals(method, obj.count_of)
+        self.frame, self.locals_size = frame_locals(method, obj.count_of, self.check_local)
         self.loops: list[_Loop] = []
+
+    def check_local(self, name, pos, frame) -> bool:
+        """A parameter or local must not reuse a name of the object or of the method."""
+        if key(name) in frame or self.obj.symbols.get(name) is not None or self.obj.const(name) is not None:
+            self.obj.error_at(msg.DUPLICATE_SAME_LINE.format(name=name), pos)
+            return False
+        return True
 
     def error(self, message, node, undefined=None) -> None:
         self.obj.error(message, node, undefined)
@@ -174,6 +181,9 @@ class MethodCompiler(ExprCompiler):
         other = None
         targets = []
         for item in node.items:
+            if other is not None:
+                self.error(msg.OTHER_NOT_LAST, item)
+                break
             if item.values is None:
                 other = item
                 continue
@@ -185,6 +195,10 @@ class MethodCompiler(ExprCompiler):
                     self.expr(v.low)
                     self.expr(v.high)
                     code.jump(bytes((_OP["CASE_RANGE"],)), label, "case range")
+                elif isinstance(v, Str) and len(self.obj.char_bytes(v.text)) > 1:
+                    for b in self.obj.char_bytes(v.text):   # "abc": one value per character
+                        self.push_const(b)
+                        code.jump(bytes((_OP["CASE_VALUE"],)), label, "case value")
                 else:
                     self.expr(v)
                     code.jump(bytes((_OP["CASE_VALUE"],)), label, "case value")
@@ -204,6 +218,18 @@ class MethodCompiler(ExprCompiler):
             if self.loops:
                 self.loops[-1].cases -= 1
         code.mark(end)
+
+    def no_strings(self, node) -> None:
+        """string() is not allowed where an expression is compiled twice (repeat from/to/step)."""
+        if node is None:
+            return
+        if isinstance(node, Builtin) and node.name == "string":
+            self.error(msg.STRING_NOT_ALLOWED, node)
+            raise CompileFailure()
+        for value in vars(node).values():
+            for child in (value if isinstance(value, list) else [value]):
+                if hasattr(child, "pos") and child is not node and not isinstance(child, Pos):
+                    self.no_strings(child)
 
     # ------------------------------------------------------------------ repeat
     def jmp(self, label, note) -> None:
@@ -258,6 +284,8 @@ class MethodCompiler(ExprCompiler):
     def s_RepeatFrom(self, node: RepeatFrom) -> None:
         code = self.code
         top, nxt, end = Label("repeat"), Label("repeat next"), Label("repeat end")
+        for part in (node.start, node.stop, node.step):
+            self.no_strings(part)
         self.expr(node.start)
         self.var(node.var, 1)
         code.mark(top)

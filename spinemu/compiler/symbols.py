@@ -31,6 +31,8 @@ class VarSymbol:
 
 @dataclass
 class MethodSymbol:
+    """MethodSymbo: see the module docstring."""
+
     name: str
     index: int            # 1-based method number
     public: bool
@@ -100,20 +102,26 @@ def method_order(methods: list) -> list:
     return [m for m in methods if m.public] + [m for m in methods if not m.public]
 
 
-def frame_locals(method, count_of) -> tuple[dict, int]:
-    """Frame symbols of ``method`` (result, parameters, locals) and the locals' size in bytes."""
+def frame_locals(method, count_of, check=None) -> tuple[dict, int]:
+    """Frame symbols of ``method`` (result, parameters, locals) and the locals' size in bytes.
+
+    ``check(name, pos, table)`` may refuse a name (it reports why).
+    """
     table: dict = {}
     offset = 0
     if method.result is not None and key(method.result) != "result":
-        table[key(method.result)] = LocalSymbol(method.result, 0, 1)
+        if check is None or check(method.result, method.pos, table):
+            table[key(method.result)] = LocalSymbol(method.result, 0, 1)
     offset = 4
-    for name, _pos in method.params:
-        table.setdefault(key(name), LocalSymbol(name, offset, 1))
+    for name, pos in method.params:
+        if check is None or check(name, pos, table):
+            table[key(name)] = LocalSymbol(name, offset, 1)
         offset += 4
     start = offset
     for local in method.locals:
         count = 1 if local.count is None else count_of(local.count)
-        table.setdefault(key(local.name), LocalSymbol(local.name, offset, count))
+        if check is None or check(local.name, local.pos, table):
+            table[key(local.name)] = LocalSymbol(local.name, offset, count)
         offset += 4 * count
     return table, offset - start
 

@@ -4,7 +4,7 @@
 shift/reduce or reduce/reduce conflict is an error) the first time it is
 needed; the resulting tables are pickled into the user's cache directory
 (``$XDG_CACHE_HOME/spinemu`` or ``~/.cache/spinemu``, keyed by the grammar's
-SHA-256), so later runs neither analyse the grammar nor import Lark at all:
+CRC-32, Adler-32 and length), so later runs neither analyse the grammar nor import Lark at all:
 importing Lark alone costs about 75 ms, loading the pickled tables about 3 ms.
 
 :class:`Parser` is a plain LALR driver over those tables.  It shapes results
@@ -14,10 +14,10 @@ rule's children to a builder method named after the rule's alias.
 """
 from __future__ import annotations
 
-import hashlib
 import os
 import pickle
 import tempfile
+import zlib
 from pathlib import Path
 from typing import Callable, Optional
 
@@ -113,7 +113,8 @@ def load_tables(path: Optional[Path] = None, use_cache: bool = True) -> Tables:
     """The tables for ``path`` (default: spin.lark), from the cache when possible."""
     path = path or grammar_path()
     text = path.read_text(encoding="utf-8")
-    key = hashlib.sha256(f"{_FORMAT}\0{text}".encode()).hexdigest()[:20]
+    data = f"{_FORMAT}\0{text}".encode()
+    key = f"{zlib.crc32(data):08x}{zlib.adler32(data):08x}{len(data):x}"
     cache = _cache_dir() / f"spin-{key}.lalr.pickle"
     if use_cache:
         try:
@@ -159,9 +160,14 @@ class Parser:
     def __init__(self, tables: Tables, builder):
         self.tables = tables
         self.callbacks: list[Optional[Callable]] = []
-        for (_origin, _size, callback, _e1, inline, _recipe, _none) in tables.rules:
+        # unit rules (``?a: b`` reducing one child to itself) only change state: the
+        # expression grammar's precedence chain makes most reductions of this kind
+        self.unit: list[bool] = []
+        for (_origin, size, callback, expand1, inline, recipe, append_none) in tables.rules:
             fn = None if inline else getattr(builder, callback, None)
             self.callbacks.append(fn)
+            self.unit.append(size == 1 and expand1 and not inline and not append_none
+                             and recipe == ((0, False, 0),))
 
     def parse(self, tokens: list, start: str):
         """Parse ``tokens`` from rule ``start``; raise :class:`ParseFailure` on a bad token."""
@@ -169,6 +175,7 @@ class Parser:
         states = tables.states
         rules = tables.rules
         callbacks = self.callbacks
+        unit = self.unit
         state_stack = [tables.start_states[start]]
         end_state = tables.end_states[start]
         value_stack: list = []
@@ -184,6 +191,11 @@ class Parser:
                     value_stack.append(tok)
                     break
                 r = -1 - action
+                if unit[r]:
+                    state_stack[-1] = states[state_stack[-2]][rules[r][0]]
+                    if ttype == "$END" and state_stack[-1] == end_state:
+                        return value_stack[-1]
+                    continue
                 origin, size, _cb, expand1, inline, recipe, append_none = rules[r]
                 if size:
                     children = value_stack[-size:]

@@ -84,12 +84,16 @@ class Comment:
 
 @dataclass
 class LexedFile:
+    """LexedFil: see the module docstring."""
+
     sections: list
     comments: dict  # line -> [Comment]
     errors: list    # [Diagnostic]
 
 
-DESIGNATORS = {"con", "var", "obj", "pub", "pri", "dat"}
+DESIGNATORS = {"con", "var", "obj", "pub", "pri", "dat", "dev"}
+#: words OpenSpin reserves without giving them a meaning in Spin 1 code
+_RESERVED = ("archive", "enc", "ones", "precompile")
 
 _BLOCK_WORDS = ("if ifnot elseif elseifnot else case other repeat from to step while until "
                 "next quit return abort result")
@@ -143,6 +147,8 @@ def _keywords() -> dict:
     kw.update({"and": "AND", "or": "OR", "not": "NOT"})
     for w in DESIGNATORS:
         kw[w] = "SECTION"
+    for w in _RESERVED:
+        kw[w] = "RESERVED"
     return kw
 
 
@@ -173,7 +179,7 @@ _TOKEN_RE = re.compile(r"""
 |(?P<ws>[ \t\f\x00]+)
 |(?P<com>'[^\r\n]*)
 |(?P<lbrace>\{)
-|(?P<rbrace>\})
+|(?P<rbrace>\}+)
 |(?P<float>\d[\d_]*\.\d[\d_]*(?:[eE][+-]?\d+)?|\d[\d_]*[eE][+-]?\d+)
 |(?P<dec>\d[\d_]*)
 |(?P<hex>\$[0-9A-Fa-f][0-9A-Fa-f_]*)
@@ -182,17 +188,21 @@ _TOKEN_RE = re.compile(r"""
 |(?P<bin>%[01][01_]*)
 |(?P<name>[A-Za-z_][A-Za-z_0-9]*)
 |(?P<str>"[^"\r\n]*")
+|(?P<badstr>"[^"\r\n]*)
 |(?P<op>""" + _OP_PATTERN + r""")
 """, re.X)
 
 _SPACED_EQUAL = re.compile(r"[ \t]+=(?![=<>])")
 _NUMBER_KINDS = {"dec": "NUMBER", "hex": "NUMBER", "quat": "NUMBER", "bin": "NUMBER", "float": "FLOAT"}
 _NEWLINE_RE = re.compile(r"\r\n|\r|\n")
+_BRACE_RE = re.compile(r"[{}]")
 
 
 class _Lexer:
-    def __init__(self, text: str, path: str):
+    def __init__(self, text: str, path: str, eof=None):
         self.text = text
+        lines = text.splitlines()
+        self.eof = eof or (len(lines) + 1, 1)
         self.path = path
         self.sections: list[Section] = [Section("CON", 1)]
         self.comments: dict[int, list] = {}
@@ -225,6 +235,11 @@ class _Lexer:
             self.tokens = []
         self.dat_state = 0
 
+    def _unterminated(self, message: str) -> None:
+        """An unclosed comment is reported at the end of the file (as OpenSpin does)."""
+        line, col = self.eof
+        self.error(message, line, col)
+
     def _add_comment(self, kind: str, body: str, line: int, col: int, end_line: int) -> None:
         self.comments.setdefault(line, []).append(Comment(kind, body, line, col, end_line))
 
@@ -241,24 +256,18 @@ class _Lexer:
         if text.startswith("{{", pos):
             end = text.find("}}", pos + 2)
             if end < 0:
-                self.error(msg.UNTERMINATED_DOC, line, col, 2)
+                self._unterminated(msg.UNTERMINATED_DOC.format(line=line))
                 end = len(text) - 2
             stop, kind, body = end + 2, "{{", text[pos + 2:end]
         else:
-            depth, i = 0, pos
-            n = len(text)
-            while i < n:
-                ch = text[i]
-                if ch == "{":
-                    depth += 1
-                elif ch == "}":
-                    depth -= 1
-                    if depth == 0:
-                        break
-                i += 1
-            if i >= n:
-                self.error(msg.UNTERMINATED_BRACE, line, col)
-                i = n - 1
+            depth, i = 0, len(text) - 1
+            for m in _BRACE_RE.finditer(text, pos):
+                depth += 1 if m.group() == "{" else -1
+                if depth == 0:
+                    i = m.start()
+                    break
+            else:
+                self._unterminated(msg.UNTERMINATED_BRACE.format(line=line))
             stop, kind, body = i + 1, "{", text[pos + 1:i]
         # keep line bookkeeping right across the comment's line breaks
         for m in _NEWLINE_RE.finditer(text, pos, stop):
@@ -348,6 +357,8 @@ class _Lexer:
             elif kind == "str":
                 self._emit("STRING", value[1:-1], pos)
                 self._operand()
+            elif kind == "badstr":
+                self.error(msg.UNTERMINATED_STRING, self.line, pos - self.line_start + 1)
             elif kind == "op":
                 end = self._op(value, pos)
             elif kind == "here":
@@ -384,13 +395,11 @@ class _Lexer:
             elif type_ == "LSQB":
                 type_ = "DLSQB"
             self._operand()
-        elif value == '"':  # pragma: no cover - strings are matched before operators
-            pass
         self._emit(type_, value, pos)
         return end
 
 
-def tokenize(text: str, path: str = "<input>") -> LexedFile:
+def tokenize(text: str, path: str = "<input>", eof=None) -> LexedFile:
     """Split ``text`` into sections of token lines; collect comments and lexical errors.
 
     >>> lexed = tokenize("CON\\n  X = $10 ' sixteen\\nPUB main\\n  x := X\\n")
@@ -401,4 +410,4 @@ def tokenize(text: str, path: str = "<input>") -> LexedFile:
     >>> lexed.comments[2][0].text
     ' sixteen'
     """
-    return _Lexer(text, path).run()
+    return _Lexer(text, path, eof).run()

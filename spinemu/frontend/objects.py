@@ -18,7 +18,7 @@ from typing import Optional
 
 from ..diagnostics import CompileError, Diagnostic, ParseError
 from .. import messages as msg
-from .ast import ConDef, ConEnumName, ConEnumStart, NameRef, ObjConst, SpinFile, key
+from .ast import ConEnumName, ConEnumStart, NameRef, ObjConst, SpinFile, key
 from .constants import Const, ConstError, NotConstant, evaluate
 from .parser import parse_text
 from .source import read_source
@@ -67,20 +67,27 @@ class _Loader:
         self.include_dirs = list(include_dirs)
         self.units: dict[str, ObjectUnit] = {}
         self.errors: list[Diagnostic] = []
+        self.syntax_errors = 0
         self.stack: list[str] = []
 
-    def load(self, path: str) -> Optional[ObjectUnit]:
+    def load(self, path: str, source=None) -> Optional[ObjectUnit]:
         real = os.path.realpath(path)
         if real in self.units:
             return self.units[real]
-        source = read_source(path)
+        source = source or read_source(path)
         spin, errors = parse_text(source)
         self.errors.extend(errors)
+        self.syntax_errors += len(errors)
         unit = ObjectUnit(path, spin)
         self.units[real] = unit
         self.stack.append(real)
         here = os.path.dirname(os.path.abspath(path))
+        seen: dict = {}
         for decl in spin.objs:
+            if key(decl.name) in seen:
+                self._error(msg.DUPLICATE.format(name=decl.name, line=seen[key(decl.name)]), decl, spin)
+                continue
+            seen[key(decl.name)] = decl.pos.line
             child_path = resolve_object_file(decl.filename, here, self.include_dirs)
             if child_path is None:
                 where = ", ".join([here] + self.include_dirs)
@@ -215,17 +222,20 @@ def _report(errors, spin, node, text, reported) -> None:
     errors.append(Diagnostic(text, pos.path, pos.line, pos.col, spin.source.line(pos.line)))
 
 
-def load_program(path: str, include_dirs=()) -> ObjectUnit:
+def load_program(path: str, include_dirs=(), source=None) -> ObjectUnit:
     """Load, parse and fold the constants of the object tree rooted at ``path``.
+
+    Args:
+        source: the top file's SourceText, if it is not to be read from ``path``
+            (``path`` still decides where its OBJ files are looked for).
 
     Raises:
         ParseError: syntax errors (of every file).
         CompileError: missing object files, bad or unknown constants.
     """
     loader = _Loader(include_dirs)
-    unit = loader.load(path)
+    unit = loader.load(path, source)
     if loader.errors:
-        syntax = any(d for d in loader.errors if d.message.startswith("unexpected"))
-        cls = ParseError if syntax else CompileError
+        cls = ParseError if loader.syntax_errors else CompileError
         raise cls(diagnostics=loader.errors)
     return unit

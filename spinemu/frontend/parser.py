@@ -6,7 +6,6 @@ line or method, so one run reports several errors without cascades.
 """
 from __future__ import annotations
 
-from typing import Optional
 
 from ..diagnostics import Diagnostic, ParseError
 from .. import messages as msg
@@ -15,6 +14,7 @@ from .builder import AstBuilder
 from .lalr import Parser, ParseFailure, load_tables
 from .layout import layout
 from .lexer import TAB_WIDTH, Token, tokenize, KEYWORDS, _OPERATORS
+from .preprocess import preprocess
 from .source import SourceText, read_source
 
 __all__ = ["parse_source", "parse_file", "parse_text"]
@@ -74,19 +74,48 @@ def describe_expected(expected) -> str:
     return ", ".join(words[:-1]) + " or " + words[-1]
 
 
-def _failure(exc: ParseFailure, source: SourceText) -> Diagnostic:
+def _open_brackets(tokens: list, tok) -> set:
+    """Which of ')' and ']' could close something open on ``tok``'s line before it."""
+    stack = []
+    for t in tokens:
+        if t is tok:
+            break
+        if t.line != tok.line:
+            stack.clear()
+            continue
+        if t.type == "LPAR":
+            stack.append("RPAR")
+        elif t.type in ("LSQB", "DLSQB"):
+            stack.append("RSQB")
+        elif t.type in ("RPAR", "RSQB") and stack:
+            stack.pop()
+    return set(stack)
+
+
+def _failure(exc: ParseFailure, source: SourceText, start: str, tokens: list) -> Diagnostic:
     tok = exc.token
-    exp = describe_expected(exc.expected)
-    tail = msg.EXPECTED_TAIL.format(what=exp) if exp else ""
-    text = msg.UNEXPECTED.format(found=describe_token(tok), expected=tail)
+    if tok.type == "EQUAL" and start == "method":
+        text = msg.SINGLE_EQUAL
+    else:
+        expected = set(exc.expected)
+        # LALR merges look-aheads: do not offer a ')' or ']' that closes nothing
+        expected -= {"RPAR", "RSQB"} - _open_brackets(tokens, tok)
+        exp = describe_expected(expected or exc.expected)
+        tail = msg.EXPECTED_TAIL.format(what=exp) if exp else ""
+        text = msg.UNEXPECTED.format(found=describe_token(tok), expected=tail)
     length = max(1, len(tok.value)) if isinstance(tok, Token) else 1
     return Diagnostic(text, source.path, tok.line, tok.col, source.line(tok.line), "error", length)
 
 
 def parse_text(source: SourceText) -> tuple[SpinFile, list]:
     """Parse ``source``; returns the file and the list of error diagnostics (maybe empty)."""
-    lexed = tokenize(source.text, source.path)
+    text, pp_errors = preprocess(source.text)
+    lexed = tokenize(text, source.path, source.eof)
     errors: list[Diagnostic] = list(lexed.errors)
+    for line, text_ in pp_errors:
+        errors.append(Diagnostic(text_, source.path, line, 1, source.line(line)))
+    if not source.text.strip():
+        errors.append(Diagnostic(msg.EMPTY_FILE, source.path))
     spin = SpinFile(source.path, source, comments=lexed.comments)
     parser = Parser(_get_tables(), AstBuilder(source.path))
 
@@ -101,12 +130,17 @@ def parse_text(source: SourceText) -> tuple[SpinFile, list]:
         try:
             return parser.parse(tokens, start)
         except ParseFailure as exc:
-            errors.append(_failure(exc, source))
+            errors.append(_failure(exc, source, start, tokens))
             return None
 
     for section in lexed.sections:
         spin.sections.append((section.kind, section.line))
         kind = section.kind
+        if kind == "DEV":
+            for line in section.lines:
+                tok = line.tokens[0]
+                errors.append(Diagnostic(msg.DEV_SECTION, source.path, tok.line, tok.col, source.line(tok.line)))
+            continue
         if kind in ("PUB", "PRI"):
             layout_errors: list = []
             tokens = layout(section.lines, layout_errors, indent_at)
@@ -133,6 +167,9 @@ def parse_text(source: SourceText) -> tuple[SpinFile, list]:
                 spin.objs.append(node)
             else:
                 spin.dat.append(node)
+    # a line with a lexical error gets no syntax error on top of it
+    bad_lines = {d.line for d in lexed.errors}
+    errors = [d for d in errors if d in lexed.errors or d.line not in bad_lines]
     errors.sort(key=lambda d: (d.line or 0, d.column or 0))
     return spin, errors
 

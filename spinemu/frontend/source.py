@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass, field
-from typing import Optional
+from typing import NamedTuple, Optional
 
 from ..diagnostics import ParseError
 from .. import messages as msg
@@ -20,13 +20,14 @@ __all__ = ["SourceText", "Pos", "decode_source", "read_source", "utf16_char_byte
 # strings and DAT data).  Observed by compiling every BMP character in a
 # ``byte "x"`` line: characters below U+0100 keep their value; above, the
 # result depends on the high byte's class below (index = high byte - 1):
-# ``I`` keeps the low byte, ``B`` gives $FF, and ``A``/``C``/``D`` look the low
+# ``I`` keeps the low byte (unless it is one of the bytes the tables below
+# produce: then $FF), ``B`` gives $FF, and ``A``/``C``/``D`` look the low
 # byte up in a small table (the Parallax font's arrows, bullets, box drawing;
 # anything else gives $FF).
-_U16_CLASS = ("ABCBDBBIABCBDBBIABCBDBBIABCBDBBAACCDDBBAACCDDBBIABCBDBBIABCBDBBIABCBDBB"
-              "IABCBDBBIABCBDBBIABCBDBBAACCDDBBAACCDDBBIABCBDBBIABCBDBBIABCBDBBIABCBDBB"
-              "IABCBDBBIABCBDBBAACCDDBBAACCDDBBIABCBDBBIABCBDBBIABCBDBBIABCBDBBIABCBDBB"
-              "BBBBBBBBBBAACCDDBBAACCDDBBIABCBDBBIABCBDBB")
+_U16_CLASS = ("ABCBDBBIABCBDBBIABCBDBBIABCBDBBAACCDDBBAACCDDBBIABCBDBBIABCBDBBIABCBDBBI"
+              "ABCBDBBIABCBDBBIABCBDBBAACCDDBBAACCDDBBIABCBDBBIABCBDBBIABCBDBBIABCBDBBI"
+              "ABCBDBBIABCBDBBAACCDDBBAACCDDBBIABCBDBBIABCBDBBIABCBDBBIABCBDBBIABCBDBBI"
+              "IIIIIIIAACCDDBBAACCDDBBIABCBDBBIABCBDBB")
 _U16_TABLES = {
     "A": {0x22: 0x0F, 0x23: 0x0E, 0x90: 0x02, 0x91: 0x04, 0x92: 0x03, 0x93: 0x05, 0xAC: 0xA4},
     "B": {},
@@ -35,6 +36,10 @@ _U16_TABLES = {
           0x23: 0x99, 0x24: 0x94, 0x2B: 0x98, 0x2C: 0x97, 0x33: 0x9B, 0x34: 0x96, 0x3B: 0x9A,
           0x3C: 0x92, 0x4B: 0x93, 0xB6: 0x07, 0xC0: 0x06},
 }
+
+
+_U16_TAKEN = frozenset([*range(0x00, 0x09), 0x0B, 0x0C, 0x0E, 0x0F, *range(0x10, 0x16),
+                        *range(0x90, 0xA0), 0xA4, 0xFF])
 
 
 def utf16_char_byte(ch: str) -> int:
@@ -50,13 +55,13 @@ def utf16_char_byte(ch: str) -> int:
         return 0xFF
     cls = _U16_CLASS[(code >> 8) - 1]
     if cls == "I":
-        return code & 0xFF
+        low = code & 0xFF
+        return 0xFF if low in _U16_TAKEN else low
     return _U16_TABLES[cls].get(code & 0xFF, 0xFF)
 
 
-@dataclass(frozen=True, slots=True)
-class Pos:
-    """A place in a source file: path, 1-based line and column."""
+class Pos(NamedTuple):
+    """A place in a source file: path, 1-based line and column (a tuple: cheap to make)."""
 
     path: str
     line: int
@@ -81,6 +86,11 @@ class SourceText:
     _lines: Optional[list] = field(default=None, repr=False)
 
     def __post_init__(self):
+        lines = self.text.splitlines()
+        if self.text.endswith(("\n", "\r")) or not lines:
+            self.eof = (len(lines) + 1, 1)
+        else:
+            self.eof = (len(lines), len(lines[-1]) + 1)
         if not self.text.endswith(("\n", "\r")):
             self.text += "\n"
 
@@ -94,6 +104,10 @@ class SourceText:
 
     def pos(self, line: int, col: int) -> Pos:
         return Pos(self.path, line, col)
+
+    def end_position(self) -> tuple[int, int]:
+        """Line and column just after the file's last character (where OpenSpin reports "end of file")."""
+        return self.eof
 
     def string_bytes(self, text: str) -> bytes:
         """The bytes a string literal stands for, as OpenSpin reads this file.

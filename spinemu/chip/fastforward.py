@@ -1,0 +1,224 @@
+"""Exact fast-forward of busy-wait loops (``repeat until motor.getSteps == 0``).
+
+A cog that spins in a loop which changes nothing costs the interpreter a
+bytecode every ~150 cycles for seconds of simulated time.  This module finds
+such loops and lets the scheduler skip whole iterations without changing a
+single result:
+
+1. **Learning.**  A cog that ran many bytecodes without waiting is run for a
+   while by a tracking copy of the interpreter, which records every hub read
+   and write.  A stretch between two visits of the same bytecode address with
+   the same cog state (registers, stack pointers, ``t mod 16``) is an
+   *iteration*.  It qualifies when every write in it wrote the value already
+   there, it used no time-dependent input (CNT, INA, PHSx), touched no cog
+   register, lock, cog or clock, and did not wait.  Such an iteration is a
+   pure function of the hub values it read: as long as those values stay the
+   same, the cog repeats it exactly, every ``period`` cycles.
+2. **Skipping.**  When the scheduler next runs that cog at the loop head, with
+   the same state and every value in the iteration's read set unchanged, it
+   advances the cog by as many whole periods as fit before the next bytecode
+   of any other cog (and before the cycle limit or an input change).  Those
+   iterations would have run before anything else happened on the chip and
+   read unchanged memory, so they would have done exactly what was learned.
+   The cog then continues normally; if another cog has changed something the
+   loop reads, the check fails and the cog is simply interpreted again.
+
+Skipped bytecodes are counted in the statistics as executed.
+"""
+from __future__ import annotations
+
+__all__ = ["BusyLoop", "learn_busy_loop", "IMPURE_OPS", "LEARN_AFTER", "LEARN_HORIZON"]
+
+#: bytecodes a cog runs without a wait before a learning attempt
+LEARN_AFTER = 2000
+#: learn only when the cog has this many cycles to itself (its loop must repeat in them)
+LEARN_HORIZON = 20_000
+#: bytecodes the tracking interpreter runs in one attempt
+LEARN_BUDGET = 600
+#: opcodes that touch time, pins, cogs, locks, the clock, or wait
+IMPURE_OPS = frozenset({0x15, 0x1B, 0x1F, 0x20, 0x21, 0x22, 0x23, 0x25, 0x26, 0x27}
+                       | set(range(0x28, 0x30)))
+_TIME_REGS = frozenset({0x1F1, 0x1F2, 0x1FC, 0x1FD})
+
+
+class _TrackedView:
+    """A memory view that logs reads and writes (used only while learning)."""
+
+    __slots__ = ("view", "shift", "log")
+
+    def __init__(self, view, shift, log):
+        self.view, self.shift, self.log = view, shift, log
+
+    def __getitem__(self, i):
+        v = self.view[i]
+        if isinstance(i, slice):
+            for k in range(*i.indices(len(self.view))):
+                self.log.append((0, self.shift, k, self.view[k], None))
+        else:
+            self.log.append((0, self.shift, i, v, None))
+        return v
+
+    def __setitem__(self, i, v):
+        self.log.append((1, self.shift, i, self.view[i], v))
+        self.view[i] = v
+
+    def __len__(self):
+        return len(self.view)
+
+
+class _TrackingChip:
+    """The chip as the tracking interpreter sees it: memory views log accesses."""
+
+    def __init__(self, chip, log):
+        self._chip = chip
+        self.mem = _TrackedView(chip.mem, 0, log)
+        self.mem_words = _TrackedView(chip.mem_words, 1, log)
+        self.mem_longs = _TrackedView(chip.mem_longs, 2, log)
+        self.registers = chip.registers
+
+    def __getattr__(self, name):
+        return getattr(self._chip, name)
+
+    def __setattr__(self, name, value):
+        if name in ("_chip", "mem", "mem_words", "mem_longs", "registers"):
+            object.__setattr__(self, name, value)
+        else:
+            setattr(self._chip, name, value)
+
+
+class BusyLoop:
+    """A learned pure loop of one cog.
+
+    Attributes:
+        head: bytecode address where an iteration starts.
+        state: the cog state at the head (see :func:`cog_state`).
+        phase: ``t mod 16`` at the head.
+        period: cycles per iteration (a multiple of 16).
+        bytecodes: bytecodes per iteration.
+        reads: ``(shift, index, value)``: every hub value the iteration read.
+    """
+
+    __slots__ = ("head", "state", "phase", "period", "bytecodes", "reads", "skipped")
+
+    def __init__(self, head, state, phase, period, bytecodes, reads):
+        self.head, self.state, self.phase = head, state, phase
+        self.period, self.bytecodes, self.reads = period, bytecodes, reads
+        self.skipped = 0
+
+    def still_valid(self, chip, c) -> bool:
+        """Is cog ``c`` at the head, in the learned state, with the memory it reads unchanged?"""
+        if c.pc != self.head or (c.t & 15) != self.phase or cog_state(c) != self.state:
+            return False
+        views = (chip.mem, chip.mem_words, chip.mem_longs)
+        for shift, i, v in self.reads:
+            if views[shift][i] != v:
+                return False
+        return True
+
+
+def cog_state(c) -> tuple:
+    """Everything of a Spin cog's state a loop iteration could depend on, besides hub RAM."""
+    return (c.pc, c.pc_hi, c.sp, c.dbase, c.pbase, c.pbase_hi, c.vbase, c.dcall, tuple(c.scratch),
+            c.outa, c.dira, c.ctra, c.ctrb, c.frqa, c.frqb, c.vcfg, c.vscl, c.par)
+
+
+def _impure(chip, c, op: int) -> bool:
+    if op in IMPURE_OPS:
+        return True
+    if op in (0x3D, 0x3E, 0x3F):
+        b = chip.mem[(c.pc + 1) & 0xFFFF]
+        return (b >> 5) & 3 != 0 or (0x1E0 + (b & 0x1F)) in _TIME_REGS
+    if op == 0x24:                  # SPR push: the index is on the stack
+        return (0x1F0 + (chip.mem_longs[((c.sp - 4) & 0xFFFF) >> 2] & 0xF)) in _TIME_REGS
+    return False
+
+
+def learn_busy_loop(chip, c, handlers, log, limit: int):
+    """Run cog ``c`` with the tracking interpreter and look for a pure loop.
+
+    Executes up to :data:`LEARN_BUDGET` bytecodes (they really run: this is
+    normal execution, only slower), stopping early at an impure bytecode or at
+    ``limit``.  Returns a :class:`BusyLoop` or ``None``.
+    """
+    mem = chip.mem
+    log.clear()
+    seen = {}                       # (pc, state, t mod 16) -> index into marks
+    marks = []                      # per bytecode: (t, log position, stack pointer)
+    P = c.hub_phase
+    from .control import Reschedule  # local: keep module import light
+    for _ in range(LEARN_BUDGET):
+        if c.t >= limit or c.state != "running":
+            return None
+        op = mem[c.pc]
+        if _impure(chip, c, op):
+            return None
+        key = (c.pc, c.t & 15, cog_state(c))
+        if key in seen:
+            start = seen[key]
+            t0, pos0, _ = marks[start]
+            low_sp = min(m[2] for m in marks[start:])
+            loop = _qualify(chip, log[pos0:], key, c.t - t0, len(marks) - start, low_sp)
+            if loop is not None:
+                return loop
+            seen.clear()
+            marks.clear()
+            log.clear()
+        seen[key] = len(marks)
+        marks.append((c.t, len(log), c.sp))
+        t = c.t
+        c.pc = (c.pc + 1) & 0xFFFF
+        tf = t + 12
+        tf += (P - tf) & 15
+        try:
+            c.t = tf + handlers[op](c, op, tf)
+        except Reschedule as e:      # not expected for pure ops; be safe
+            c.t = tf + e.rest
+            return None
+        c.bytecodes += 1
+    return None
+
+
+def _qualify(chip, entries, key, period: int, bytecodes: int, sp_head: int):
+    """A :class:`BusyLoop` if the logged iteration is pure, else ``None``.
+
+    Pure: every byte it wrote ends the iteration with the value it had at the
+    start, and bytes that change in between lie above the cog's stack pointer
+    at its lowest point in the iteration (``sp_head``: the cog's own unused
+    stack, which no other cog reads).
+    The read set is every value it read that it had not written itself first.
+    """
+    if period <= 0 or period % 16:
+        return None
+    mem = chip.mem
+    written = {}                    # byte address -> value at the start of the iteration
+    reads = {}
+    for write, shift, i, old, new in entries:
+        size = 1 << shift
+        base = i << shift
+        if write:
+            for k in range(size):
+                b = base + k
+                if b not in written:
+                    written[b] = (old >> (8 * k)) & 0xFF
+            if old != new and base < sp_head:
+                return None
+        elif (shift, i) not in reads:
+            inside = [base + k in written for k in range(size)]
+            if all(inside):
+                continue
+            if any(inside):
+                return None
+            reads[(shift, i)] = old
+    for b, v in written.items():
+        if mem[b] != v:
+            return None
+    pc, phase, state = key
+    return BusyLoop(pc, state, phase, period, bytecodes,
+                    tuple((s, i, v) for (s, i), v in reads.items()))
+
+
+def tracking_handlers(chip, timing):
+    """The interpreter's handlers bound to logging memory views; returns ``(handlers, log)``."""
+    from .spin import build_handlers
+    log = []
+    return build_handlers(_TrackingChip(chip, log), timing), log

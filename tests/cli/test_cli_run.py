@@ -1,0 +1,140 @@
+"""End-to-end command-line runs, in-process (STYLE.md section 7)."""
+import io
+from pathlib import Path
+
+import pytest
+
+from spinemu.cli import main
+from spinemu.trace import read_log
+
+ROOT = Path(__file__).parent.parent.parent
+DATA = ROOT / "tests" / "data" / "article"
+SRC = ROOT / "spin_src"
+
+
+def run(*argv):
+    out, err = io.StringIO(), io.StringIO()
+    code = main([str(a) for a in argv], out, err)
+    return code, out.getvalue(), err.getvalue()
+
+
+def test_compile_writes_the_openspin_image(tmp_path):
+    target = tmp_path / "demo.binary"
+    code, out, err = run("compile", SRC / "stepper_demo.spin", "-o", target)
+    assert code == 0, err
+    assert target.read_bytes() == (DATA / "as_printed_stepper_demo.binary").read_bytes()
+
+
+def test_compile_writes_an_eeprom_image(tmp_path):
+    target = tmp_path / "demo.eeprom"
+    code, _, err = run("compile", SRC / "simple_stepper.spin", "-e", target)
+    assert code == 0, err
+    data = target.read_bytes()
+    assert len(data) == 32768
+    assert data[:168] == (DATA / "as_printed_simple_stepper.binary").read_bytes()
+
+
+def test_a_syntax_error_names_file_line_column_and_writes_nothing(tmp_path):
+    src = tmp_path / "bad.spin"
+    src.write_text("PUB main\n  outa[0] := := 1\n")
+    target = tmp_path / "bad.binary"
+    code, _, err = run("compile", src, "-o", target)
+    assert code == 1
+    first = err.splitlines()[0]
+    assert first.startswith(f"{src}:2:") and ": error: " in first
+    assert "Traceback" not in err and "^" in err
+    assert not target.exists()
+
+
+def test_a_missing_object_file_is_reported_at_the_obj_line(tmp_path):
+    src = tmp_path / "top.spin"
+    src.write_text("OBJ\n  m : \"nowhere\"\nPUB main\n  m.go\n")
+    code, _, err = run("compile", src)
+    assert code == 1 and err.startswith(f"{src}:2:") and "nowhere" in err
+
+
+def test_run_of_the_column_demo_matches_the_reference_in_spinsim_mode(tmp_path):
+    log = tmp_path / "demo.log"
+    code, out, err = run("run", SRC / "corrected" / "stepper_demo.spin", "--compat", "spinsim",
+                         "--trace", log, "--no-progress")
+    assert code == 0, err
+    assert "all cogs stopped" in out and "2 started, 2 stopped" in out
+    code, out, _ = run("trace", "compare", DATA / "corrected_stepper_demo.trace", log)
+    assert code == 0 and "largest offset 0 cycles" in out
+
+
+def test_run_of_a_binary_image_with_a_cycle_limit(tmp_path):
+    log = tmp_path / "s.log"
+    code, out, err = run("run", DATA / "as_printed_simple_stepper.binary", "--cycles", "20_000_000",
+                         "--trace", log, "--trace-format", "log")
+    assert code == 0, err
+    trace = read_log(log.read_text())
+    assert trace.changes[-1][0] <= 20_000_000
+    assert "cycle limit" in out
+
+
+def test_run_writes_vcd_and_hub_dump(tmp_path):
+    vcd, hub = tmp_path / "s.vcd", tmp_path / "s.hub"
+    code, _, err = run("run", SRC / "simple_stepper.spin", "--seconds", "0.05", "--trace", vcd, "--dump-hub", hub)
+    assert code == 0, err
+    assert "$var wire 1" in vcd.read_text() and len(hub.read_bytes()) == 32768
+
+
+def test_run_of_the_basic_stamp_program_steps_every_15_ms(tmp_path):
+    log = tmp_path / "b.log"
+    code, out, err = run("run", SRC / "bs2" / "stepper_bs2.bs2", "--seconds", "0.1", "--trace", log)
+    assert code == 0, err
+    assert "time limit" in out
+    code, out, _ = run("trace", "steps", log, "--clock", "1000000", "--pins", "4..7")
+    assert code == 0 and "15.000 ms/step" in out
+
+
+def test_basic_stamp_input_stimulus_reaches_the_program(tmp_path):
+    prog = tmp_path / "in.bs2"
+    prog.write_text("' {$STAMP BS2}\n' {$PBASIC 2.5}\nDO\n  OUT0 = IN3\nLOOP UNTIL IN3 = 1\nHIGH 1\n")
+    log = tmp_path / "in.log"
+    code, out, err = run("run", prog, "--seconds", "1", "--timing", "realistic", "--input", "P3=0@0,1@0.5", "--trace", log)
+    assert code == 0, err
+    assert "END statement" in out
+    assert read_log(log.read_text()).changes[-1][2] & 0b10
+
+
+def test_spin_input_stimulus_drives_ina(tmp_path):
+    prog = tmp_path / "echo.spin"
+    prog.write_text("CON\n  _clkmode = xtal1 + pll16x\n  _xinfreq = 5_000_000\n"
+                    "PUB main\n  dira[0]~~\n  repeat\n    outa[0] := ina[5]\n")
+    log = tmp_path / "e.log"
+    code, _, err = run("run", prog, "--seconds", "0.01", "--input", "P5=0@0,1@0.004", "--trace", log)
+    assert code == 0, err
+    highs = [c for c, d, o in read_log(log.read_text()).changes if o & 1]
+    assert highs and 4 * 80_000 <= highs[0] <= 4 * 80_000 + 5_000
+
+
+@pytest.mark.parametrize("argv,msg", [
+    (["run", "x.bs2", "--cycles", "100"], "limited with --seconds"),
+    (["run", "x.spin", "--timing", "exact"], "BASIC Stamp programs"),
+    (["run", "x.spin", "--input", "P40=1"], "pin 40 does not exist"),
+    (["run", "x.spin", "--cycles", "10", "--seconds", "1"], "not allowed with argument"),
+])
+def test_usage_errors_exit_2(tmp_path, argv, msg):
+    (tmp_path / "x.spin").write_text("PUB main\n")
+    (tmp_path / "x.bs2").write_text("' {$STAMP BS2}\nEND\n")
+    argv = [str(tmp_path / a) if a.startswith("x.") else a for a in argv]
+    code, _, err = run(*argv)
+    assert code == 2 and msg in err, err
+
+
+def test_an_unreadable_image_is_an_error(tmp_path):
+    bad = tmp_path / "junk.binary"
+    bad.write_bytes(b"not an image at all, really")
+    code, _, err = run("run", bad)
+    assert code == 1 and str(bad) in err and "Traceback" not in err
+
+
+def test_sidebyside_of_bs2_and_spin_forward_revolution(tmp_path):
+    b, s = tmp_path / "b.log", tmp_path / "s.log"
+    assert run("run", SRC / "bs2" / "stepper_bs2.bs2", "--seconds", "1", "--trace", b)[0] == 0
+    assert run("run", SRC / "simple_stepper.spin", "--seconds", "0.5", "--trace", s)[0] == 0
+    code, out, _ = run("sidebyside", b, s, "--left-pins", "4..7", "--right-pins", "1..4",
+                       "--left-clock", "1000000", "--steps", "48")
+    assert code == 0 and "coil patterns agree for all 48 compared steps" in out

@@ -1,0 +1,4 @@
+CON
+  _clkmode = xtal1 + xtal2
+  _xinfreq = 5_000_000
+PUB main

@@ -1,0 +1,4 @@
+PUB main | x
+  x := y
+  x := y + 1
+  z := 3

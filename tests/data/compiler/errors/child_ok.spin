@@ -1,0 +1,2 @@
+PUB f
+  return 1

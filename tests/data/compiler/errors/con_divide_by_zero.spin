@@ -1,0 +1,4 @@
+CON
+  A = 10
+  B = A / 0
+PUB main

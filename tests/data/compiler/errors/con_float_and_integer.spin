@@ -1,0 +1,3 @@
+CON
+  A = 1.5 + 2
+PUB main

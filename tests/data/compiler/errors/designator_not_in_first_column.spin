@@ -1,0 +1,3 @@
+PUB main
+  outa[0]~~
+ PRI other

@@ -1,0 +1,5 @@
+CON
+  count = 3
+VAR
+  long count
+PUB main

@@ -1,0 +1,5 @@
+PUB main | x
+  if x
+    x := 1
+   else
+    x := 2

@@ -1,0 +1,3 @@
+PUB main
+DAT
+  byte 1.5

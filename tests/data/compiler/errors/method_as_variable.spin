@@ -1,0 +1,2 @@
+PUB main
+  main := 3

@@ -1,0 +1,3 @@
+OBJ
+  s : "no_such_object"
+PUB main

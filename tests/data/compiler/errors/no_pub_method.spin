@@ -1,0 +1,2 @@
+PRI main
+  outa[0]~~

@@ -1,0 +1,3 @@
+OBJ
+  c[x] : "child_ok"
+PUB main

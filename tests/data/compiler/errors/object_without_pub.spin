@@ -1,0 +1,3 @@
+OBJ
+  c : "child_nopub"
+PUB main

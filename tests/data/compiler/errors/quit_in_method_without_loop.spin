@@ -1,0 +1,3 @@
+PUB main | x
+  if x
+    quit

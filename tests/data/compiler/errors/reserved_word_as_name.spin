@@ -1,0 +1,3 @@
+VAR
+  long mov
+PUB main

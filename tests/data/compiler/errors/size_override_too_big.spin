@@ -1,0 +1,4 @@
+VAR
+  byte b
+PUB main | x
+  x := b.word

@@ -1,0 +1,2 @@
+PUB main | i
+  repeat i from string("a") to 5

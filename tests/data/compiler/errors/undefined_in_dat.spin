@@ -1,0 +1,3 @@
+PUB main
+DAT
+  long missing_label

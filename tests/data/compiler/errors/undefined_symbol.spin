@@ -1,0 +1,3 @@
+PUB main | x
+  x := 1
+  x := y + 1

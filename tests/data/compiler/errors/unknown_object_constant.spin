@@ -1,0 +1,5 @@
+OBJ
+  c : "child_ok"
+CON
+  A = c#NOPE
+PUB main

@@ -1,0 +1,4 @@
+OBJ
+  c : "child_ok"
+PUB main
+  c.nosuch

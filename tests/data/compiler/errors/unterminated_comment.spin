@@ -1,0 +1,4 @@
+PUB main | x
+  x := 1
+{ this comment
+  never ends

@@ -1,0 +1,4 @@
+PUB main
+  f(1, 2)
+PRI f(a)
+  return a
