@@ -31,13 +31,13 @@ from typing import Callable, Optional
 from ..diagnostics import EmulationError, ImageError
 from ..image import BOOT_FRAME, HUB_SIZE, ImageHeader, load_image
 from ..trace import PinTrace
-from .cog import PIN_WAIT, RUNNING, STOPPED, IDLE_PASM, Cog
-from .control import CogStopped, RebootRequested, Reschedule
-from .fastforward import LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
+from .cog import PARKED, PIN_WAIT, RUNNING, STOPPED, IDLE_PASM, Cog
+from .control import CogStopped, Preempted, RebootRequested, Reschedule
+from .fastforward import INTERRUPTED, LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
 from .registers import Registers
 from .rom import INTERPRETER_ENTRY, build_rom
 from .spin import build_handlers
-from .timing import Timing, load_timing
+from .timing import Timing, access_offsets, load_timing
 
 __all__ = ["Chip", "RunResult", "COG_LOAD_CYCLES", "COMPAT_MODES"]
 
@@ -48,6 +48,10 @@ COG_LOAD_CYCLES = 496 * 16 + 16
 _SPINSIM_START_CYCLES = -4          # spinsim: first instruction in the COGINIT's last cycle
 _NEVER = 1 << 62
 _WRAP = 1 << 32
+
+
+def _preempt_handler(c, op, t):
+    raise Preempted
 
 
 @dataclass
@@ -127,41 +131,61 @@ class Chip:
         self.clock_hz = self.header.clkfreq
         from .counters import Counters
         self.counters = Counters(self)
+        self.counters_on = False        # some counter is in an output mode (else pins skip them)
         self.registers = Registers(self)
+        #: one flag per hub long: set while a parked busy loop (fastforward.py) reads it
+        self.watch = bytearray(0x10000 >> 2)
+        self._parked: list = []
         self.handlers = build_handlers(self, self.timing)
+        self.access_at = access_offsets()
+        self._handlers = list(self.handlers)      # the real ones, while a preemption is pending
+        self._preempt = False
         self.pin_events: list = []          # (cycle, seq, cog, dira, outa, running)
         self.cog_events: list = []
         self.warnings: list = []
         self._seq = 0
         self._started = False
+        self._booted = False
         #: when a list, every bytecode is appended to it as
         #: ``(cog, pc, op, t_start, t_fetched, t_next, stack_before, stack_after)``
         #: (the instrumented loop; used by the timing derivation and debugging)
         self.recorder = None
         self._tracking = None       # the learning interpreter (fastforward.py), built on first use
+        self.learn_tracked = 0      # bytecodes the latest learning attempt ran
         self._ff_loops = self._ff_skipped = 0
         self.last_target = None     # the target value of the latest assignment operator
         self.now = 0
 
     # ------------------------------------------------------------------ pins
-    def pin_state(self) -> tuple[int, int]:
-        """``(dir, out)`` over running cogs right now."""
+    def pin_state(self, t: int) -> tuple[int, int]:
+        """``(dir, out)`` over running cogs at cycle ``t`` (counter outputs included)."""
         d = o = 0
+        counters = self.counters if self.counters_on else None
         for c in self.cogs:
             if c.state != STOPPED:
                 d |= c.dira
-                o |= c.dira & c.outa
+                out = c.outa
+                if counters is not None:
+                    out |= counters.outputs(c, t)
+                o |= c.dira & out
         return d, o
 
     def ina(self, t: int) -> int:
         """What INA reads at cycle ``t``: driven pins as driven, the rest from the input model."""
-        d, o = self.pin_state()
+        d, o = self.pin_state(t)
         return o | (self.inputs.levels(t) & ~d & 0xFFFFFFFF)
 
-    def note_pins(self, c: Cog, t: int) -> None:
-        """Cog ``c`` changed DIRA or OUTA at cycle ``t`` (the pins change then)."""
+    def record_cog_pins(self, c: Cog, t: int) -> None:
+        """Add cog ``c``'s pin drive at cycle ``t`` to the pin record."""
+        out = c.outa
+        if self.counters_on:
+            out |= self.counters.outputs(c, t)
         self._seq += 1
-        self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, c.state != STOPPED))
+        self.pin_events.append((t, self._seq, c.id, c.dira, out, c.state != STOPPED))
+
+    def note_pins(self, c: Cog, t: int) -> None:
+        """Cog ``c`` changed DIRA, OUTA or a counter at cycle ``t`` (the pins change then)."""
+        self.record_cog_pins(c, t)
         if self._pin_waiters:
             self._wake_pin_waiters(t)
 
@@ -203,8 +227,12 @@ class Chip:
     def stop_cog(self, c: Cog, t: int, why: str) -> None:
         if c.state == STOPPED:
             return
+        if c.state == PARKED:
+            self._unpark(c, t)
         if c in self._pin_waiters:
             self._pin_waiters.remove(c)
+        if self.counters_on:
+            self.counters.flush(c, t)
         c.state = STOPPED
         c.pin_wait = None
         c.t = _NEVER
@@ -299,6 +327,7 @@ class Chip:
         c.pin_wait = (mask, state, equal, after)
         c.state = PIN_WAIT
         self._pin_waiters.append(c)
+        self._ext_seen = max(self._ext_seen, t)
         raise Reschedule(_NEVER - tf)
 
     def _wake_pin_waiters(self, t: int) -> None:
@@ -332,9 +361,14 @@ class Chip:
         self._started = True
         wall = time.perf_counter()
         limit = _NEVER if max_cycles is None else max_cycles
-        self._boot()
+        if not self._booted:
+            self._boot()
         reason = self._schedule(limit, progress)
         end = self.now if reason != "cycle limit" else limit
+        if self.counters_on:
+            for c in self.cogs:
+                if c.state != STOPPED:
+                    self.counters.flush(c, end)
         wall = time.perf_counter() - wall
         trace = self._build_trace(end)
         per_cog = {c.id: c.bytecodes for c in self.cogs if c.bytecodes}
@@ -349,7 +383,24 @@ class Chip:
         return {"fast_forward": self.fast_forward, "busy_loops_learned": self._ff_loops,
                 "bytecodes_skipped": self._ff_skipped}
 
+    def step(self, cog: int = 0) -> int:
+        """Execute exactly one bytecode of cog ``cog`` (booting the chip first if needed).
+
+        For tests and debuggers: no other cog runs, no fast-forward.
+
+        Returns:
+            the cycles from the start of that bytecode to the start of the next.
+        """
+        if not self._booted:
+            self._boot()
+        c = self.cogs[cog]
+        t = c.t
+        self._run_spin(c, self._key(c) + 1)
+        return c.t - t
+
     def _boot(self) -> None:
+        self._booted = True
+        self._ext_seen = 0
         self._pin_waiters = []
         self._video_ready = [0] * 8
         cog0 = self.cogs[0]
@@ -362,49 +413,81 @@ class Chip:
         self.cog_events[-1] = (t_first, 0, "start", f"Spin method at ${cog0.pc:04X} (boot)")
 
     def _schedule(self, limit: int, progress) -> str:
+        """Advance the cog furthest behind until every cog stopped or ``limit``. (Hot loop.)"""
         cogs = self.cogs
+        inputs = self.inputs
         next_report = 0
+        run = (self._run_spin_traced if self.recorder is not None
+               else self._run_with_fast_forward if self.fast_forward else self._run_spin)
         while True:
-            running = [c for c in cogs if c.state == RUNNING]
-            if not running:
-                if self._pin_waiters:
-                    wake = self.inputs.next_change(self.now)
-                    if wake is None or wake >= limit:
-                        self.now = limit if limit < _NEVER else self.now
-                        return "cycle limit" if limit < _NEVER else "deadlock"
-                    self.now = wake
-                    self._wake_pin_waiters(wake)
+            # the running cog whose next bytecode reaches the hub first (lowest id on ties)
+            c = None
+            ck = 0
+            for k in cogs:
+                if k.state == RUNNING:
+                    key = self._key(k)
+                    if c is None or key < ck:
+                        c, ck = k, key
+            ext = self._next_external(limit) if self._pin_waiters else None
+            if ext is not None and (c is None or ext <= c.t):
+                self.now = self._ext_seen = ext         # an input edge or a counter edge
+                self._wake_pin_waiters(ext)
+                continue
+            if c is None:
+                if self._parked and not self._pin_waiters:
+                    if limit >= _NEVER:
+                        return "stalled"
+                    for p in list(self._parked):
+                        self._unpark(p, limit)
                     continue
-                return "all cogs stopped" if not any(c.state == IDLE_PASM for c in cogs) else (
-                    "cycle limit" if limit < _NEVER else "deadlock")
-            c = min(running, key=lambda k: (k.t, k.id))
-            if c.t >= limit:
+                if self._pin_waiters:           # nothing can change the pins they wait on
+                    if limit < _NEVER:
+                        self.now = limit
+                        return "cycle limit"
+                    return "deadlock"
+                if any(k.state == IDLE_PASM for k in cogs):
+                    return "cycle limit" if limit < _NEVER else "deadlock"
+                return "all cogs stopped"
+            t = c.t
+            if ck >= limit:
                 self.now = limit
+                for p in list(self._parked):
+                    self._unpark(p, limit)
                 return "cycle limit"
             until = limit
-            for o in running:
-                if o is not c:
-                    bound = o.t + (1 if c.id < o.id else 0)
+            cid = c.id
+            for o in cogs:
+                if o.state == RUNNING and o is not c:
+                    key = self._key(o)
+                    bound = key + 1 if cid < o.id else key
                     if bound < until:
                         until = bound
-            if self._pin_waiters:
-                nxt = self.inputs.next_change(c.t)
-                if nxt is not None and nxt < until:
-                    until = max(nxt, c.t + 1)
-            self.now = c.t
+            if ext is not None and ext < until:
+                until = ext
+            self.now = t
             try:
-                if self.recorder is not None:
-                    self._run_spin_traced(c, until)
-                elif not self.fast_forward:
-                    self._run_spin(c, until)
-                else:
-                    self._run_with_fast_forward(c, until)
+                run(c, until)
             except RebootRequested:
                 self.now = c.t
                 return "reboot"
-            if progress is not None and self.now >= next_report:
-                progress(self.now)
-                next_report = self.now + 10_000_000
+            if progress is not None and t >= next_report:
+                progress(t)
+                next_report = t + 10_000_000
+
+    def _key(self, c: Cog) -> int:
+        """When cog ``c``'s next bytecode touches shared state (see timing.access_offsets)."""
+        tf = c.t + 12
+        return tf + ((c.hub_phase - tf) & 15) + self.access_at[self.mem[c.pc]]
+
+    def _next_external(self, limit: int):
+        """The next input change or counter edge after the last one handled, if before ``limit``."""
+        t = self._ext_seen
+        nxt = self.inputs.next_change(t)
+        if self.counters_on:
+            ce = self.counters.next_edge(t)
+            if ce is not None and (nxt is None or ce < nxt):
+                nxt = ce
+        return nxt if nxt is not None and nxt < limit else None
 
     def _run_with_fast_forward(self, c: Cog, until: int) -> None:
         """Run ``c`` until ``until``, skipping iterations of a learned busy loop (see fastforward.py)."""
@@ -412,7 +495,7 @@ class Chip:
         if busy is None:
             if c.bytecodes - c.learn_mark > c.learn_after and until - c.t > LEARN_HORIZON:
                 self._learn(c, until)
-                if c.busy is None or c.state != RUNNING:
+                if c.busy is None or c.state != RUNNING or c.pc != c.busy.head:
                     self._run_spin(c, until)
                     return
                 busy = c.busy
@@ -426,13 +509,63 @@ class Chip:
                 c.learn_mark = c.bytecodes
                 self._run_spin(c, until)
                 return
-            k = (until - c.t) // busy.period
-            if k > 0:
-                c.t += k * busy.period
-                c.bytecodes += k * busy.bytecodes
-                busy.skipped += k * busy.bytecodes
-                self._ff_skipped += k * busy.bytecodes
+            self._park(c)
+            return
         self._run_spin_to(c, until, busy.head)
+        if c.pc != busy.head and c.bytecodes - c.learn_mark > LEARN_AFTER:
+            c.busy = None               # the program left that loop: look for the next one
+            c.learn_after = 0
+            c.learn_mark = c.bytecodes
+
+    # ------------------------------------------------------------------ parking busy loops
+    def _park(self, c: Cog) -> None:
+        """Take cog ``c`` out of the schedule: it repeats its learned loop until something it reads changes."""
+        c.state = PARKED
+        c.park_t0 = c.t
+        c.learn_mark = c.bytecodes
+        for shift, i, _ in c.busy.reads:
+            a = (i << shift) & 0xFFFF
+            self.watch[a >> 2] = 1
+        self._parked.append(c)
+
+    def _unpark(self, c: Cog, t_limit: int) -> None:
+        """Bring parked cog ``c`` to where it would be, running its loop, when bytecodes starting before ``t_limit`` are done."""
+        busy = c.busy
+        k = max(0, (t_limit - 1 - c.park_t0) // busy.period)
+        c.t = c.park_t0 + k * busy.period
+        c.bytecodes += k * busy.bytecodes
+        busy.skipped += k * busy.bytecodes
+        self._ff_skipped += k * busy.bytecodes
+        c.state = RUNNING
+        self._parked.remove(c)
+        self.watch[:] = bytes(len(self.watch))
+        for p in self._parked:
+            for shift, i, _ in p.busy.reads:
+                self.watch[((i << shift) & 0xFFFF) >> 2] = 1
+        if c.t < t_limit:
+            self._run_spin(c, t_limit)
+
+    def watch_hit(self, writer: Cog, hub_addr: int, t: int, op: int) -> None:
+        """``writer``'s bytecode ``op``, started at ``t``, is about to write a hub long a parked loop reads.
+
+        The parked cog is brought up to ``t`` first (it reads the old value, as
+        it would have), and the writer's run loop is preempted after this
+        bytecode, so that the scheduler interleaves the two cogs again.
+        """
+        woke = False
+        tf = t + 12
+        key = tf + ((writer.hub_phase - tf) & 15) + self.access_at[op]
+        for p in list(self._parked):
+            if any(((i << shift) & 0xFFFF) >> 2 == hub_addr >> 2 for shift, i, _ in p.busy.reads):
+                self._unpark(p, key + 1 if p.id < writer.id else key)
+                woke = True
+        if woke:
+            self._preempt = True
+            self.handlers[:] = [_preempt_handler] * 256
+
+    def _end_preemption(self) -> None:
+        self.handlers[:] = self._handlers
+        self._preempt = False
 
     def _learn(self, c: Cog, until: int) -> None:
         if self._tracking is None:
@@ -443,8 +576,11 @@ class Chip:
         finally:
             log.clear()
         c.learn_mark = c.bytecodes
+        if loop is INTERRUPTED:
+            return                      # not a failure: try again at the next chance
         if loop is None:
-            c.learn_after = min(max(2 * c.learn_after, LEARN_AFTER), 1 << 20)
+            # wait until the failed attempt's cost is small against normal running
+            c.learn_after = max(LEARN_AFTER, 16 * self.learn_tracked)
         else:
             c.busy = loop
             self._ff_loops += 1
@@ -453,24 +589,30 @@ class Chip:
         """:meth:`_run_spin`, but stop when the cog comes back to ``stop_pc`` (a loop head)."""
         mem = self.mem
         H = self.handlers
+        ACC = self.access_at
         P = c.hub_phase
         t = c.t
         n = 0
         tf = t
         try:
-            while t < limit:
+            while True:
                 pc = c.pc
                 op = mem[pc]
-                c.pc = pc + 1
                 tf = t + 12
                 tf += (P - tf) & 15
-                t = tf + H[op](c, op, tf)
+                if tf + ACC[op] >= limit:
+                    break
+                c.pc = pc + 1
+                t = tf + H[op](c, op, t)
                 n += 1
                 if c.pc == stop_pc:
                     break
         except Reschedule as e:
             t = tf + e.rest
             n += 1
+        except Preempted:
+            c.pc = pc
+            self._end_preemption()
         except CogStopped:
             c.bytecodes += n + 1
             return
@@ -497,22 +639,28 @@ class Chip:
             return
         mem = self.mem
         H = self.handlers
+        ACC = self.access_at
         P = c.hub_phase
         t = c.t
         n = 0
         tf = t
         try:
-            while t < limit:
+            while True:
                 pc = c.pc
                 op = mem[pc]
-                c.pc = pc + 1
                 tf = t + 12
                 tf += (P - tf) & 15
-                t = tf + H[op](c, op, tf)
+                if tf + ACC[op] >= limit:       # another cog touches the hub first
+                    break
+                c.pc = pc + 1
+                t = tf + H[op](c, op, t)
                 n += 1
         except Reschedule as e:
             t = tf + e.rest
             n += 1
+        except Preempted:
+            c.pc = pc
+            self._end_preemption()
         except CogStopped:
             c.bytecodes += n + 1
             return
@@ -527,9 +675,9 @@ class Chip:
             c.t = t
 
     def _run_spin_traced(self, c: Cog, limit: int) -> None:
-        """The instrumented twin of :meth:`_run_spin`: one bytecode at a time, recorded."""
+        """The instrumented twin of :meth:`_run_spin`: runs one bytecode and records it."""
         L, W = self.mem_longs, self.mem_words
-        while c.state == RUNNING and c.t < limit:
+        if c.state == RUNNING and self._key(c) < limit:
             pc, t, sp = c.pc, c.t, c.sp
             before = tuple(L[((sp - 4 * k) & 0xFFFF) >> 2] for k in range(1, 5))
             op = self.mem[pc]
@@ -548,7 +696,7 @@ class Chip:
                         break
                 before = before + (n,)
             self.last_target = None
-            self._run_spin(c, t + 1)
+            self._run_spin(c, self._key(c) + 1)
             sp = c.sp
             after = tuple(L[((sp - 4 * k) & 0xFFFF) >> 2] for k in range(1, 3))
             t_next = c.t if c.state == RUNNING else self.now

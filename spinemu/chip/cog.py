@@ -19,9 +19,11 @@ later run a cog through the same scheduler: ``engine`` names what runs it.
 """
 from __future__ import annotations
 
-__all__ = ["Cog", "STOPPED", "RUNNING", "PIN_WAIT", "IDLE_PASM"]
+__all__ = ["Cog", "STOPPED", "RUNNING", "PIN_WAIT", "PARKED", "IDLE_PASM"]
 
 STOPPED, RUNNING, PIN_WAIT, IDLE_PASM = "stopped", "running", "pin wait", "pasm (not emulated)"
+#: running a learned busy loop, taken out of the schedule (see fastforward.py)
+PARKED = "parked"
 
 
 class Cog:
@@ -39,7 +41,7 @@ class Cog:
         # statistics
         "bytecodes",
         # fast-forward: the learned busy loop, and when to try learning next
-        "busy", "learn_mark", "learn_after",
+        "busy", "learn_mark", "learn_after", "park_t0",
     )
 
     def __init__(self, cog_id: int):
@@ -53,6 +55,7 @@ class Cog:
         self.busy = None
         self.learn_mark = 0
         self.learn_after = 0
+        self.park_t0 = 0
         self.reset_registers()
 
     def reset_registers(self) -> None:
@@ -68,7 +71,7 @@ class Cog:
 
     @property
     def running(self) -> bool:
-        return self.state in (RUNNING, PIN_WAIT)
+        return self.state in (RUNNING, PIN_WAIT, PARKED)
 
     def __repr__(self) -> str:  # pragma: no cover - debugging aid
         return f"<Cog {self.id} {self.state} t={self.t} pc=${self.pc:04X} sp=${self.sp:04X}>"

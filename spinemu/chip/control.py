@@ -7,7 +7,7 @@ the cog's next bytecode, as a normal handler would have returned.
 """
 from __future__ import annotations
 
-__all__ = ["Reschedule", "CogStopped", "RebootRequested"]
+__all__ = ["Reschedule", "CogStopped", "RebootRequested", "Preempted"]
 
 
 class Reschedule(Exception):
@@ -30,3 +30,9 @@ class RebootRequested(Exception):
 
     def __init__(self, rest: int):
         self.rest = rest
+
+
+class Preempted(Exception):
+    """Raised *instead of* running the next bytecode: a parked cog was woken
+    (fastforward.py) and the scheduler must run it first.  The bytecode has
+    not started; the run loop puts the cog back before it."""

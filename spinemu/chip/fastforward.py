@@ -35,6 +35,8 @@ LEARN_AFTER = 2000
 LEARN_HORIZON = 20_000
 #: bytecodes the tracking interpreter runs in one attempt
 LEARN_BUDGET = 600
+#: what :func:`learn_busy_loop` returns when it had to stop before finding a loop
+INTERRUPTED = "interrupted"
 #: opcodes that touch time, pins, cogs, locks, the clock, or wait
 IMPURE_OPS = frozenset({0x15, 0x1B, 0x1F, 0x20, 0x21, 0x22, 0x23, 0x25, 0x26, 0x27}
                        | set(range(0x28, 0x30)))
@@ -138,7 +140,8 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
 
     Executes up to :data:`LEARN_BUDGET` bytecodes (they really run: this is
     normal execution, only slower), stopping early at an impure bytecode or at
-    ``limit``.  Returns a :class:`BusyLoop` or ``None``.
+    ``limit``.  Returns a :class:`BusyLoop`, ``None`` (no pure loop found), or
+    :data:`INTERRUPTED` (another cog's turn came first: try again soon).
     """
     mem = chip.mem
     log.clear()
@@ -146,10 +149,17 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
     marks = []                      # per bytecode: (t, log position, stack pointer)
     P = c.hub_phase
     from .control import Reschedule  # local: keep module import light
+    acc = chip.access_at
+    chip.learn_tracked = 0
     for _ in range(LEARN_BUDGET):
-        if c.t >= limit or c.state != "running":
-            return None
+        chip.learn_tracked += 1
+        if c.state != "running" or chip._preempt:
+            return INTERRUPTED
         op = mem[c.pc]
+        tf = c.t + 12
+        tf += (P - tf) & 15
+        if tf + acc[op] >= limit:
+            return INTERRUPTED
         if _impure(chip, c, op):
             return None
         key = (c.pc, c.t & 15, cog_state(c))
@@ -167,10 +177,8 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
         marks.append((c.t, len(log), c.sp))
         t = c.t
         c.pc = (c.pc + 1) & 0xFFFF
-        tf = t + 12
-        tf += (P - tf) & 15
         try:
-            c.t = tf + handlers[op](c, op, tf)
+            c.t = tf + handlers[op](c, op, t)
         except Reschedule as e:      # not expected for pure ops; be safe
             c.t = tf + e.rest
             return None

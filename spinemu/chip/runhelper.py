@@ -29,9 +29,9 @@ __all__ = ["run_spin_method"]
 _M = 0xFFFFFFFF
 
 
-def run_spin_method(chip, c, tf: int) -> int:
-    """Execute RUN for cog ``c`` (fetch completed at ``tf``); returns the cycles to the next bytecode."""
-    L, W = chip.mem_longs, chip.mem_words
+def run_spin_method(chip, c, t: int) -> int:
+    """Execute RUN for cog ``c`` (bytecode started at ``t``); returns the cycles from its fetch to the next bytecode."""
+    L, W, watch = chip.mem_longs, chip.mem_words, chip.watch
     sp = c.sp
     stack = L[(sp - 4) >> 2]
     word = L[(sp - 8) >> 2]
@@ -45,11 +45,15 @@ def run_spin_method(chip, c, tf: int) -> int:
     def wl(a, v):
         a &= 0xFFFF
         if a < 0x8000:
+            if watch[a >> 2]:
+                chip.watch_hit(c, a, t, 0x15)
             L[a >> 2] = v & _M
 
     def ww(a, v):
         a &= 0xFFFF
         if a < 0x8000:
+            if watch[a >> 2]:
+                chip.watch_hit(c, a, t, 0x15)
             W[a >> 1] = v & 0xFFFF
 
     # the arguments move to the new stack (as BYTEMOVE would copy them)
@@ -57,6 +61,8 @@ def run_spin_method(chip, c, tf: int) -> int:
     for i, b in enumerate(args):
         a = (stack16 + 12 + i) & 0xFFFF
         if a < 0x8000:
+            if watch[a >> 2]:
+                chip.watch_hit(c, a, t, 0x15)
             chip.mem[a] = b
     # the routine's working values left above the operands (slots n, n+1, n+2)
     for slot, value in ((params, nbytes), (params + 1, d), (params + 2, nbytes)):

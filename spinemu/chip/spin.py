@@ -3,9 +3,10 @@
 :func:`build_handlers` returns the 256-entry dispatch list the run loop indexes
 with the opcode byte (derived from :data:`spinemu.bytecode.TABLE`: the entry's
 ``handler`` name picks the function; unknown bytes share one handler).  A
-handler is called as ``h(cog, op, tf)`` after the opcode byte was fetched
-(``cog.pc`` already points past it; ``tf`` is the cycle at which the fetch
-completed) and returns ``rest``: the cycles from ``tf`` to the start of the
+handler is called as ``h(cog, op, t)`` after the opcode byte was fetched
+(``cog.pc`` already points past it; ``t`` is the cycle the bytecode started
+at; the fetch completed at ``tf = fetched(cog, t)``) and returns ``rest``: the
+cycles from ``tf`` to the start of the
 cog's next bytecode.  Why that one number is enough is explained in
 docs/timing.md: every bytecode starts with a hub read, after which the hub
 window is known, so the rest of the ROM interpreter's path takes a fixed
@@ -26,7 +27,7 @@ from ..bytecode import TABLE
 from .control import CogStopped, RebootRequested, Reschedule
 from .mathops import BINARY, MASK32, UNARY
 from .rom import INTERPRETER_ENTRY, RETURN_TO_STOP
-from .timing import Timing
+from .timing import Timing, math_param
 
 __all__ = ["build_handlers", "random_forward", "random_reverse"]
 
@@ -87,15 +88,24 @@ def build_handlers(chip, timing: Timing):
                   lambda a: W[a >> 1],
                   lambda a: L[a >> 2])
 
-    def sized_write(size, a, v):
+    def sized_write(size, a, v, c, t, op):
         a &= 0xFFFF
         if a < 0x8000:
+            if WATCH[a >> 2]:
+                chip.watch_hit(c, a, t, op)
             if size == 0:
                 mem[a] = v & 0xFF
             elif size == 1:
                 W[a >> 1] = v & 0xFFFF
             else:
                 L[a >> 2] = v & MASK32
+
+    def fetched(c, t):
+        """The cycle the opcode fetch of a bytecode started at ``t`` completes."""
+        tf = t + 12
+        return tf + ((c.hub_phase - tf) & 15)
+
+    WATCH = chip.watch       # per hub long: 1 if a parked busy loop reads it
 
     def push(c, v):
         sp = c.sp
@@ -217,7 +227,7 @@ def build_handlers(chip, timing: Timing):
         return new, tab[a]
 
     # ------------------------------------------------------------------ $00-$3F
-    def op_frame(c, op, tf):
+    def op_frame(c, op, t):
         sp = c.sp
         W[sp >> 1] = (c.pbase | op) & 0xFFFF
         W[(sp + 2) >> 1] = c.vbase
@@ -243,7 +253,7 @@ def build_handlers(chip, timing: Timing):
         c.pc = full & 0xFFFF
         c.pc_hi = (full >> 16) & 0xFFFF
 
-    def op_call(c, op, tf):
+    def op_call(c, op, t):
         m = mem[c.pc]
         c.pc += 1
         _enter(c, m)
@@ -256,7 +266,7 @@ def build_handlers(chip, timing: Timing):
         c.pbase_hi = full >> 16
         c.vbase = (c.vbase + (ent >> 16)) & 0xFFFF
 
-    def op_call_obj(c, op, tf):
+    def op_call_obj(c, op, t):
         pc = c.pc
         o, m = mem[pc], mem[pc + 1]
         c.pc = pc + 2
@@ -264,7 +274,7 @@ def build_handlers(chip, timing: Timing):
         _enter(c, m)
         return T.call_obj
 
-    def op_call_obj_x(c, op, tf):
+    def op_call_obj_x(c, op, t):
         pc = c.pc
         o, m = mem[pc], mem[pc + 1]
         c.pc = pc + 2
@@ -273,12 +283,12 @@ def build_handlers(chip, timing: Timing):
         _enter(c, m)
         return T.call_obj_x
 
-    def op_jmp(c, op, tf):
+    def op_jmp(c, op, t):
         off, long_ = jump_operand(c)
         c.pc += off
         return T.jmp[long_]
 
-    def op_tjz(c, op, tf):
+    def op_tjz(c, op, t):
         off, long_ = jump_operand(c)
         if L[(c.sp - 4) >> 2] == 0:
             c.sp -= 4
@@ -286,7 +296,7 @@ def build_handlers(chip, timing: Timing):
             return T.tjz[(long_, True)]
         return T.tjz[(long_, False)]
 
-    def op_djnz(c, op, tf):
+    def op_djnz(c, op, t):
         off, long_ = jump_operand(c)
         i = (c.sp - 4) >> 2
         v = (L[i] - 1) & MASK32
@@ -297,7 +307,7 @@ def build_handlers(chip, timing: Timing):
         c.sp -= 4
         return T.djnz[(long_, False)]
 
-    def op_jz(c, op, tf):
+    def op_jz(c, op, t):
         off, long_ = jump_operand(c)
         sp = c.sp - 4
         c.sp = sp
@@ -306,7 +316,7 @@ def build_handlers(chip, timing: Timing):
             return T.jz[(long_, True)]
         return T.jz[(long_, False)]
 
-    def op_jnz(c, op, tf):
+    def op_jnz(c, op, t):
         off, long_ = jump_operand(c)
         sp = c.sp - 4
         c.sp = sp
@@ -315,13 +325,13 @@ def build_handlers(chip, timing: Timing):
             return T.jnz[(long_, True)]
         return T.jnz[(long_, False)]
 
-    def op_case_done(c, op, tf):
+    def op_case_done(c, op, t):
         pop(c)
         end = pop(c)
         c.pc = (c.pbase + end) & 0xFFFF
         return T.case_done
 
-    def op_case_value(c, op, tf):
+    def op_case_value(c, op, t):
         off, long_ = jump_operand(c)
         v = pop(c)
         if v == L[(c.sp - 4) >> 2]:
@@ -329,7 +339,7 @@ def build_handlers(chip, timing: Timing):
             return T.case_value[(long_, True)]
         return T.case_value[(long_, False)]
 
-    def op_case_range(c, op, tf):
+    def op_case_range(c, op, t):
         off, long_ = jump_operand(c)
         hi = _signed(pop(c))
         lo = _signed(pop(c))
@@ -341,7 +351,7 @@ def build_handlers(chip, timing: Timing):
             return T.case_range[(long_, True)]
         return T.case_range[(long_, False)]
 
-    def op_look_done(c, op, tf):
+    def op_look_done(c, op, t):
         c.sp -= 12
         push(c, 0)
         return T.look_done
@@ -353,7 +363,7 @@ def build_handlers(chip, timing: Timing):
         c.sp = sp + 4
         c.pc = (c.pbase + end) & 0xFFFF
 
-    def op_lookup_value(c, op, tf):
+    def op_lookup_value(c, op, t):
         v = pop(c)
         sp = c.sp
         base_i = (sp - 12) >> 2
@@ -363,7 +373,7 @@ def build_handlers(chip, timing: Timing):
         L[base_i] = (L[base_i] + 1) & MASK32
         return T.lookup_value[False]
 
-    def op_lookdown_value(c, op, tf):
+    def op_lookdown_value(c, op, t):
         v = pop(c)
         sp = c.sp
         base_i = (sp - 12) >> 2
@@ -373,7 +383,7 @@ def build_handlers(chip, timing: Timing):
         L[base_i] = (L[base_i] + 1) & MASK32
         return T.lookdown_value[False]
 
-    def op_lookup_range(c, op, tf):
+    def op_lookup_range(c, op, t):
         hi = _signed(pop(c))
         lo = _signed(pop(c))
         sp = c.sp
@@ -388,7 +398,7 @@ def build_handlers(chip, timing: Timing):
         L[base_i] = (base + span + 1) & MASK32
         return T.lookup_range[False]
 
-    def op_lookdown_range(c, op, tf):
+    def op_lookdown_range(c, op, t):
         hi = _signed(pop(c))
         lo = _signed(pop(c))
         sp = c.sp
@@ -402,15 +412,16 @@ def build_handlers(chip, timing: Timing):
         L[base_i] = (base + span + 1) & MASK32
         return T.lookdown_range[False]
 
-    def op_pop(c, op, tf):
+    def op_pop(c, op, t):
         n = pop(c)
         c.sp = (c.sp - n) & 0xFFFF
         return T.pop_bytes
 
-    def op_run(c, op, tf):
-        return chip.run_helper(c, tf)
+    def op_run(c, op, t):
+        tf = fetched(c, t)
+        return chip.run_helper(c, t)
 
-    def op_strsize(c, op, tf):
+    def op_strsize(c, op, t):
         a = pop(c) & 0xFFFF
         n = 0
         while mem[(a + n) & 0xFFFF]:
@@ -418,7 +429,7 @@ def build_handlers(chip, timing: Timing):
         push(c, n)
         return T.strsize(n)
 
-    def op_strcomp(c, op, tf):
+    def op_strcomp(c, op, t):
         b = pop(c) & 0xFFFF
         a = pop(c) & 0xFFFF
         n = 0
@@ -432,17 +443,17 @@ def build_handlers(chip, timing: Timing):
                 push(c, MASK32)
                 return T.strcomp(n, True)
 
-    def op_fill(c, op, tf):
+    def op_fill(c, op, t):
         size = op - 0x18
         count = pop(c)
         value = pop(c)
         a = pop(c)
         step = 1 << size
         for i in range(count if count < 0x10000 else 0x10000):
-            sized_write(size, a + i * step, value)
+            sized_write(size, a + i * step, value, c, t, op)
         return T.fill(size, count)
 
-    def op_move(c, op, tf):
+    def op_move(c, op, t):
         size = op - 0x1C
         count = pop(c)
         src = pop(c)
@@ -453,18 +464,21 @@ def build_handlers(chip, timing: Timing):
         n = count if count < 0x10000 else 0x10000
         idx = range(n) if ((dst & 0xFFFF) & align) <= ((src & 0xFFFF) & align) else range(n - 1, -1, -1)
         for i in idx:
-            sized_write(size, dst + i * step, read(((src + i * step) & 0xFFFF) & align))
+            sized_write(size, dst + i * step, read(((src + i * step) & 0xFFFF) & align), c, t, op)
         return T.move(size, count)
 
-    def op_waitpeq(c, op, tf):
+    def op_waitpeq(c, op, t):
+        tf = fetched(c, t)
         pop(c)                  # port: only port A exists
         mask = pop(c)
         state = pop(c)
         return chip.wait_pins(c, mask, state, op == 0x1B, tf)
 
-    def op_clkset(c, op, tf):
+    def op_clkset(c, op, t):
         freq = pop(c)
         mode = pop(c) & 0xFF
+        if WATCH[0] or WATCH[1]:
+            chip.watch_hit(c, 0, t, op)
         L[0] = freq
         mem[4] = mode
         rest = T.clkset
@@ -473,30 +487,35 @@ def build_handlers(chip, timing: Timing):
         chip.set_clock(mode, freq)
         return rest
 
-    def op_cogstop(c, op, tf):
+    def op_cogstop(c, op, t):
+        tf = fetched(c, t)
         return chip.cogstop(c, pop(c) & 7, tf, T.cogstop)
 
-    def op_lockret(c, op, tf):
+    def op_lockret(c, op, t):
         chip.lockret(pop(c) & 7)
         return T.lockret
 
-    def op_waitcnt(c, op, tf):
+    def op_waitcnt(c, op, t):
+        tf = fetched(c, t)
         target = pop(c)
         issue = tf + T.waitcnt_issue
         wait = (target - issue - T.waitcnt_min) & MASK32
         return T.waitcnt_issue + T.waitcnt_min + wait + T.waitcnt_after
 
-    def op_push_spr(c, op, tf):
+    def op_push_spr(c, op, t):
+        tf = fetched(c, t)
         r = 0x1F0 + (pop(c) & 0xF)
         push(c, reg_read(c, r, tf + T.spr_read_at))
         return T.spr_push
 
-    def op_pop_spr(c, op, tf):
+    def op_pop_spr(c, op, t):
+        tf = fetched(c, t)
         r = 0x1F0 + (pop(c) & 0xF)
         reg_write(c, r, pop(c), tf + T.spr_pop - 4)     # registers change in the last instruction
         return T.spr_pop
 
-    def op_using_spr(c, op, tf):
+    def op_using_spr(c, op, t):
+        tf = fetched(c, t)
         r = 0x1F0 + (pop(c) & 0xF)
         a = mem[c.pc]
         c.pc += 1
@@ -505,12 +524,14 @@ def build_handlers(chip, timing: Timing):
         reg_write(c, r, new, tf + T.spr_using + rest - 4)
         return T.spr_using + rest
 
-    def op_waitvid(c, op, tf):
+    def op_waitvid(c, op, t):
+        tf = fetched(c, t)
         pixels = pop(c)
         colors = pop(c)
         return chip.waitvid(c, colors, pixels, tf)
 
-    def op_coginit(c, op, tf):
+    def op_coginit(c, op, t):
+        tf = fetched(c, t)
         par = pop(c)
         code = pop(c)
         cog_id = pop(c)
@@ -519,20 +540,20 @@ def build_handlers(chip, timing: Timing):
             push(c, result)
         raise Reschedule(T.coginit[op == 0x28])
 
-    def op_locknew(c, op, tf):
+    def op_locknew(c, op, t):
         n = chip.locknew()
         if op == 0x29:
             push(c, n)
         return T.locknew[op == 0x29]
 
-    def op_lockset(c, op, tf):
+    def op_lockset(c, op, t):
         setting = op in (0x2A, 0x2E)
         was = chip.lockset(pop(c) & 7, setting)
         if op < 0x2C:
             push(c, MASK32 if was else 0)
         return T.lockset[("lockset" if setting else "lockclr", op < 0x2C)]
 
-    def op_return(c, op, tf):
+    def op_return(c, op, t):
         if op & 1:
             value = pop(c)
         else:
@@ -556,11 +577,11 @@ def build_handlers(chip, timing: Timing):
             push(c, value)
         return T.returns(op, frames, not flags & 1)
 
-    def op_push_const(c, op, tf):
+    def op_push_const(c, op, t):
         push(c, (MASK32, 0, 1)[op - 0x34])
         return T.push_const
 
-    def op_push_mask(c, op, tf):
+    def op_push_mask(c, op, t):
         b = mem[c.pc]
         c.pc += 1
         v = (2 << (b & 0x1F)) & MASK32
@@ -571,14 +592,15 @@ def build_handlers(chip, timing: Timing):
         push(c, v)
         return T.push_mask
 
-    def op_push_imm(c, op, tf):
+    def op_push_imm(c, op, t):
         n = op - 0x37
         pc = c.pc
         push(c, int.from_bytes(mem[pc:pc + n], "big"))
         c.pc = pc + n
         return T.push_imm[n]
 
-    def op_reg(c, op, tf):
+    def op_reg(c, op, t):
+        tf = fetched(c, t)
         b = mem[c.pc]
         c.pc += 1
         r = 0x1E0 + (b & 0x1F)
@@ -625,11 +647,11 @@ def build_handlers(chip, timing: Timing):
             return T.reg[key] + rest
         raise chip.fault(c, c.pc - 2, f"register access ${b:02X} is not a Spin operation")
 
-    def op_unknown(c, op, tf):
+    def op_unknown(c, op, t):
         raise chip.fault(c, c.pc - 1, f"unknown bytecode ${op:02X}")
 
     # ------------------------------------------------------------------ $40-$7F variables
-    def op_var_long(c, op, tf):
+    def op_var_long(c, op, t):
         a = ((c.dbase if op & 0x20 else c.vbase) + (op & 0x1C)) & 0xFFFF
         access = op & 3
         if access == 0:
@@ -640,6 +662,8 @@ def build_handlers(chip, timing: Timing):
             sp = c.sp - 4
             c.sp = sp
             if a < 0x8000:
+                if WATCH[a >> 2]:
+                    chip.watch_hit(c, a, t, op)
                 L[a >> 2] = L[sp >> 2]
         elif access == 3:
             sp = c.sp
@@ -651,60 +675,134 @@ def build_handlers(chip, timing: Timing):
             c.pc = pc + 1
             new, rest = _assign(c, aop, L[a >> 2], MASK32, False)
             if a < 0x8000:
+                if WATCH[a >> 2]:
+                    chip.watch_hit(c, a, t, op)
                 L[a >> 2] = new & MASK32
             return T.var_using[op & 0x20 != 0] + rest
         return T.var[op]
 
     # ------------------------------------------------------------------ $80-$DF memory
-    def op_mem(c, op, tf):
+    def make_mem(op):
+        """A handler for memory bytecode ``op`` with its fields resolved (hot path)."""
         size = (op >> 5) & 3
         base = (op >> 2) & 3
+        indexed = bool(op & 0x10)
         access = op & 3
-        long_off = False
-        if base:
-            off, long_off = offset_operand(c)
-            a = off + (c.pbase, c.vbase, c.dbase)[base - 1]
-            if op & 0x10:
-                a += pop(c) << size
+        align = (0xFFFF, 0xFFFE, 0xFFFC)[size]
+        if access == 2:
+            r_short, r_long = T.mem_using[(op, False)], T.mem_using.get((op, True), 0)
         else:
-            if op & 0x10:
-                i = pop(c)
-                a = pop(c) + (i << size)
+            r_short, r_long = T.mem[(op, False)], T.mem.get((op, True), 0)
+
+        def address(c):
+            """Pop index/address operands and decode the offset; returns (address, rest)."""
+            rest = r_short
+            if base:
+                pc = c.pc
+                b = mem[pc]
+                if b & 0x80:
+                    a = ((b & 0x7F) << 8) | mem[pc + 1]
+                    c.pc = pc + 2
+                    rest = r_long
+                else:
+                    a = b
+                    c.pc = pc + 1
+                a += c.vbase if base == 2 else c.dbase if base == 3 else c.pbase
+                if indexed:
+                    sp = c.sp - 4
+                    c.sp = sp
+                    a += L[sp >> 2] << size
             else:
-                a = pop(c)
-        a &= MASK32
-        key = (op, long_off)
+                sp = c.sp - 4
+                if indexed:
+                    a = L[(sp - 4) >> 2] + (L[sp >> 2] << size)
+                    sp -= 4
+                else:
+                    a = L[sp >> 2]
+                c.sp = sp
+            return a & MASK32, rest
+
         if access == 0:
-            push(c, sized_read[size](a & (0xFFFF, 0xFFFE, 0xFFFC)[size]))
+            if size == 2:
+                def h(c, op, t):
+                    a, rest = address(c)
+                    sp = c.sp
+                    L[sp >> 2] = L[(a & 0xFFFC) >> 2]
+                    c.sp = sp + 4
+                    return rest
+            else:
+                def h(c, op, t):
+                    a, rest = address(c)
+                    sp = c.sp
+                    L[sp >> 2] = mem[a & 0xFFFF] if size == 0 else W[(a & 0xFFFE) >> 1]
+                    c.sp = sp + 4
+                    return rest
         elif access == 1:
-            sized_write(size, a, pop(c))
+            def h(c, op, t):
+                a, rest = address(c)
+                sp = c.sp - 4
+                c.sp = sp
+                sized_write(size, a, L[sp >> 2], c, t, op)
+                return rest
         elif access == 3:
-            push(c, a)
+            def h(c, op, t):
+                a, rest = address(c)
+                sp = c.sp
+                L[sp >> 2] = a
+                c.sp = sp + 4
+                return rest
         else:
-            aop = mem[c.pc]
-            c.pc += 1
-            v = sized_read[size](a & (0xFFFF, 0xFFFE, 0xFFFC)[size])
-            new, rest = _assign(c, aop, v, MASK32, False)
-            sized_write(size, a, new)
-            return T.mem_using[key] + rest
-        return T.mem[key]
+            read = sized_read[size]
+
+            def h(c, op, t):
+                a, rest = address(c)
+                pc = c.pc
+                aop = mem[pc]
+                c.pc = pc + 1
+                new, arest = _assign(c, aop, read(a & align), MASK32, False)
+                sized_write(size, a, new, c, t, op)
+                return rest + arest
+        h.__name__ = "op_mem"
+        return h
 
     # ------------------------------------------------------------------ $E0-$FF math
-    def op_math(c, op, tf):
+    def make_math(op):
+        """A handler for math bytecode ``op`` (hot path): constant cost unless its loop varies."""
         f = op & 0x1F
         u = UNARY[f]
-        sp = c.sp
+        table = T._math[f]
+        const = table[0] if len(set(table)) == 1 else None
         if u is not None:
-            i = (sp - 4) >> 2
-            x = L[i]
-            L[i] = u(x)
-            return T.math(f, x, 0)
-        y = L[(sp - 4) >> 2]
-        i = (sp - 8) >> 2
-        x = L[i]
-        L[i] = BINARY[f](x, y)
-        c.sp = sp - 4
-        return T.math(f, x, y)
+            if const is not None:
+                def h(c, op, t):
+                    i = (c.sp - 4) >> 2
+                    L[i] = u(L[i])
+                    return const
+            else:
+                def h(c, op, t):
+                    i = (c.sp - 4) >> 2
+                    x = L[i]
+                    L[i] = u(x)
+                    return table[math_param(op, x, 0)]
+        else:
+            fn = BINARY[f]
+            if const is not None:
+                def h(c, op, t):
+                    sp = c.sp - 4
+                    i = (sp - 4) >> 2
+                    L[i] = fn(L[i], L[sp >> 2])
+                    c.sp = sp
+                    return const
+            else:
+                def h(c, op, t):
+                    sp = c.sp - 4
+                    i = (sp - 4) >> 2
+                    x, y = L[i], L[sp >> 2]
+                    L[i] = fn(x, y)
+                    c.sp = sp
+                    return table[math_param(op, x, y)]
+        h.__name__ = "op_math"
+        return h
 
     named = {
         "op_frame_result": op_frame, "op_frame": op_frame, "op_frame_result_trap": op_frame,
@@ -731,6 +829,7 @@ def build_handlers(chip, timing: Timing):
         "op_push_mask": op_push_mask, "op_push_imm1": op_push_imm, "op_push_imm2": op_push_imm,
         "op_push_imm3": op_push_imm, "op_push_imm4": op_push_imm,
         "op_reg_bit": op_reg, "op_reg_range": op_reg, "op_reg": op_reg,
-        "op_unknown": op_unknown, "op_var_long": op_var_long, "op_mem": op_mem, "op_math": op_math,
+        "op_unknown": op_unknown, "op_var_long": op_var_long,
     }
-    return [named[entry.handler] for entry in TABLE]
+    makers = {"op_mem": make_mem, "op_math": make_math}
+    return [makers[e.handler](e.code) if e.handler in makers else named[e.handler] for e in TABLE]

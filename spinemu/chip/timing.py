@@ -25,7 +25,7 @@ from __future__ import annotations
 
 from typing import Optional
 
-__all__ = ["Timing", "load_timing", "hub_align", "segments_rest", "math_param", "MATH_REF"]
+__all__ = ["Timing", "load_timing", "hub_align", "segments_rest", "math_param", "MATH_REF", "access_offsets"]
 
 
 def hub_align(t: int, phase: int) -> int:
@@ -252,3 +252,44 @@ def math_param(op: int, x: int, y: int) -> int:
 
 #: the parameter whose cycles the assignment-operator table includes
 MATH_REF = {0xF6: 1, 0xF7: 1, 0xF1: 0}
+
+
+def access_offsets() -> list:
+    """Per opcode: cycles from the fetch to the bytecode's access of shared state.
+
+    The scheduler orders cogs by these moments, not by bytecode starts, so
+    that a cog reading a variable and another writing it see each other in
+    the order of their hub accesses.  Measured on spinsim 0.99 logs of
+    tests/data/chip/programs/access_*.spin (completion cycle of the hub
+    instruction that reads or writes the variable, minus the fetch's).  For
+    assignment operators it is the earliest write-back (WRITE's): an offset
+    must never exceed the bytecode's shortest path, or the order of one cog's
+    own bytecodes would break.  Other bytecodes touch only their own stack: 0.
+
+    ==========================  ====  ====  =========
+    access                      push  pop   operators
+    ==========================  ====  ====  =========
+    VAR/LOC long ($40-$7F)       112   144   208
+    memory, offset operand       224   256   320
+    ... indexed                  240   272   336
+    memory, address popped       176   208   256
+    ... indexed                  192   224   272
+    ==========================  ====  ====  =========
+
+    REG reads 144 (bit 220, range 244), SPR 164, LOCKNEW/LOCKSET/LOCKCLR 112,
+    COGSTOP 112 (when the target stops), COGINIT 172 (when the new cog starts).
+    """
+    acc = [0] * 256
+    for op in range(0x40, 0x80):
+        acc[op] = (112, 144, 208, 0)[op & 3]
+    for op in range(0x80, 0xE0):
+        table = (224, 256, 320) if (op >> 2) & 3 else (176, 208, 256)
+        if op & 3 != 3:
+            acc[op] = table[op & 3] + (16 if op & 0x10 else 0)
+    acc[0x3D], acc[0x3E], acc[0x3F], acc[0x24] = 220, 244, 144, 164
+    for op in range(0x29, 0x30):
+        if op != 0x2C:
+            acc[op] = 112
+    acc[0x21] = 112
+    acc[0x28] = acc[0x2C] = 172
+    return acc

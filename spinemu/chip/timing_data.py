@@ -4,6 +4,7 @@
 DATA = {
     'abort/per_frame': 80,
     'abort/push': 204,
+    'abort_value/drop': 204,
     'abort_value/push': 220,
     'assign/mem/08': 640,
     'assign/mem/0c': 640,

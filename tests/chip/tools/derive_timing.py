@@ -5,7 +5,7 @@ Usage (from the worktree root; needs OpenSpin and spinsim, which tests never nee
 
     python tests/chip/tools/derive_timing.py --openspin PATH --spinsim PATH [--check] [probe.spin ...]
 
-For every probe (default: tests/data/chip/timing/*.spin and the conformance
+For every probe (default: tests/data/chip/programs/*.spin and the conformance
 programs) it
 
 1. compiles it with OpenSpin,
@@ -213,6 +213,8 @@ def collect(probes, openspin, spinsim, instructions, max_cycles, verbose=False):
                         break
                     if i + 1 < len(my):
                         NEXT_PC[id(m)] = my[i + 1][1]
+                        if my[i + 1][3] != m[5]:
+                            continue                  # the cog was stopped and started again
                     if "rest" not in r:
                         continue
                     names, ctx = name_of(chip, m)
@@ -232,7 +234,7 @@ def main(argv=None):
     ap.add_argument("--check", action="store_true")
     ap.add_argument("probes", nargs="*")
     a = ap.parse_args(argv)
-    probes = a.probes or sorted(glob.glob(os.path.join(ROOT, "tests/data/chip/timing/*.spin")))
+    probes = a.probes or sorted(glob.glob(os.path.join(ROOT, "tests/data/chip/programs/*.spin")))
     obs = collect(probes, a.openspin, a.spinsim, a.instructions, a.max_cycles, verbose=True)
     from solve_timing import solve
     data, problems = solve(obs)

@@ -108,21 +108,23 @@ def solve(obs):
         v = min(vals)
         if isinstance(name, str):
             data[name] = v
-    # returns and aborts: value for one frame plus a per-frame cost
-    for name in ("abort", "abort_value", "return", "return_value"):
-        for pushed in (True, False):
-            one = simple.get((name, 1, pushed))
-            if one:
-                data[f"{name}/{'push' if pushed else 'drop'}"] = min(one)
+    # returns and aborts: a value per (kind, result pushed) for one frame, plus a per-frame cost
+    rets = {k: min(v) for k, v in simple.items() if isinstance(k, tuple) and k[0] in
+            ("abort", "abort_value", "return", "return_value")}
     per = set()
-    for (name, frames, pushed), vals in [(k, v) for k, v in simple.items() if isinstance(k, tuple) and k[0] in ("abort", "abort_value")]:
-        one = simple.get((name, 1, pushed))
-        if frames > 1 and one:
-            per.add((min(vals) - min(one)) / (frames - 1))
-    if per:
-        if len(per) > 1:
-            problems.append(f"abort per-frame cost not constant: {sorted(per)}")
-        data["abort/per_frame"] = int(min(per))
+    for (name, frames, pushed), v in rets.items():
+        for (name2, frames2, pushed2), v2 in rets.items():
+            if (name2, pushed2) == (name, pushed) and frames2 > frames:
+                per.add((v2 - v) // (frames2 - frames))
+    if len(per) > 1:
+        problems.append(f"abort per-frame cost not constant: {sorted(per)}")
+    per_frame = min(per) if per else 0
+    data["abort/per_frame"] = per_frame
+    for (name, frames, pushed), v in rets.items():
+        key = f"{name}/{'push' if pushed else 'drop'}"
+        base = v - per_frame * (frames - 1)
+        if data.setdefault(key, base) != base:
+            problems.append(f"{key}: {base} from {frames} frames, {data[key]} elsewhere")
     # RUN: linear in the parameter count
     runs = {k[1]: min(v) for k, v in simple.items() if isinstance(k, tuple) and k[0] == "run"}
     if runs:
