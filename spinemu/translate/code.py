@@ -8,7 +8,7 @@ the cycles the weaver charges around Python lines (see weave.py).
 """
 from __future__ import annotations
 
-from .costs import access_at, chain
+from .costs import access_range, chain
 
 __all__ = ["Code", "COMMENT_COLUMN"]
 
@@ -113,7 +113,9 @@ class Code:
             for slot in "baet":
                 ops, extra = entry.get(slot, [[], 0])
                 k = chain(ops)
-                a = access_at(ops)
+                a = access_range(ops)
+                if a is not None and a[0] == a[1]:
+                    a = a[0]
                 row.append(None if k is None and not extra else (k, extra) if a is None else (k, extra, a))
             mid = entry.get("mid")
             if mid:

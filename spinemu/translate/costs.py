@@ -23,9 +23,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..bytecode import TABLE, decode_assign, decode_unsigned, instruction_length
-from ..chip.timing import MATH_REF, Timing
+from ..chip.timing import MATH_REF, Timing, access_offsets
 
-__all__ = ["Op", "price", "chain", "split", "split_read", "jump_op", "ceil16", "access_at"]
+__all__ = ["Op", "price", "chain", "split", "split_read", "jump_op", "ceil16", "access_at", "access_range"]
 
 
 @dataclass(frozen=True)
@@ -137,25 +137,47 @@ def price(T: Timing, data: bytes, run_params: int = 0, inside: bool = True) -> l
     while i < n:
         op = data[i]
         length = instruction_length(data, i)
-        ops.append(Op(op, _rest(T, data, i, op, run_params, inside), _kind(data, i, op), _hub(op)))
+        ops.append(Op(op, _rest(T, data, i, op, run_params, inside), _kind(data, i, op), _hub(op, data, i)))
         i += length
     return ops
 
 
-def _hub(op: int) -> bool:
+def _hub(op: int, data=b"", i: int = 0) -> bool:
+    """Does the bytecode touch state other cogs share (hub variables and memory, pins, locks, cogs)?"""
     if 0x40 <= op < 0x80:
         return not op & 0x20 and op & 3 != 3
     if 0x80 <= op < 0xE0:
         return (op >> 2) & 3 != 3 and op & 3 != 3
-    return 0x16 <= op <= 0x1E or 0x29 <= op <= 0x2F
+    if op in (0x3D, 0x3E, 0x3F):
+        return bool(data[i + 1] & 0x10) if len(data) > i + 1 else True
+    return 0x16 <= op <= 0x1E or 0x21 <= op <= 0x2F
+
+
+_ACCESS = access_offsets()
 
 
 def access_at(ops):
-    """``chain`` of the ops before the first shared hub access (``None``: none, or it is the first op)."""
-    for k, o in enumerate(ops):
+    """Cycles from a run's first fetch to its first shared access (``None``: it has none).
+
+    The bytecode engine orders cogs by the moment each bytecode touches shared
+    state (spinemu.chip.timing.access_offsets); a run waits for the other
+    cogs until the first such moment.
+    """
+    found = access_range(ops)
+    return found[0] if found else None
+
+
+def access_range(ops):
+    """``(first, last)``: cycles from a run's first fetch to its first and its last shared access, or None."""
+    before = 0
+    first = last = None
+    for o in ops:
         if o.hub:
-            return chain(ops[:k]) if k else None
-    return None
+            at = before + _ACCESS[o.code]
+            first = at if first is None else first
+            last = at
+        before += ceil16(o.rest + 12)
+    return None if first is None else (first, last)
 
 
 def _kind(data, i, op) -> str:

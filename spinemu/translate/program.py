@@ -277,6 +277,7 @@ class ObjectTranslator:
         code.raw("# the stack bytes in use at calls made from a line (where a called method's frame goes)")
         sizes = {self.names.attr(m.name): 4 + 4 * m.nparams + m.locals_size for m in self.cobj.methods}
         code.raw(f"SPIN_FRAME_SIZES = {sizes!r}")
+        code.raw(f"SPIN_METHODS = {({self.names.attr(m.name): m.index for m in self.cobj.methods})!r}")
         code.raw(f"SPIN_CALL_DEPTHS = {dict(sorted(code.call_depths.items()))!r}")
         if code.lookups:
             code.raw("# lookup/lookdown lines: cycles per item, of LOOK_DONE, and what a match adds per item")

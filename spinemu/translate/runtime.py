@@ -38,28 +38,34 @@ _SPINSIM_START = -4
 
 
 def tick(k: int) -> None:
-    """Charge the current cog a run of bytecodes: fetch alignment, then ``k`` cycles. (Hot path.)"""
-    c = RT.cog
-    t = c.t
-    if t >= RT.limit:
-        RT.pause()
-        t = c.t
-    t += 12
-    c.t = t + ((c.hub_phase - t) & 15) + k
+    """Charge the current cog a run of bytecodes: fetch alignment, then ``k`` cycles. (Hot path.)
 
-
-def tick_at(k: int, access: int) -> None:
-    """:func:`tick` for a run whose first shared hub access starts ``access`` cycles after its fetch.
-
-    The run must not pass another cog before that access (the bytecode
-    engine would let the other cog's earlier writes land first), so the
-    cog waits for the scheduler at that moment, not at the run's start.
+    The run touches no shared state, so it may start as soon as its first
+    fetch is before every other cog's next hub access (as in the bytecode
+    engine, which orders cogs by those moments).
     """
     c = RT.cog
     t = c.t + 12
     t += (c.hub_phase - t) & 15
-    if t + access >= RT.limit:
-        c.t = t + access
+    if t >= RT.limit:
+        RT.keys[c.id] = t
+        RT.pause()
+    c.t = t + k
+
+
+def tick_at(k: int, access: int, last: int = -1) -> None:
+    """:func:`tick` for a run whose first shared access (hub variable, register, lock) comes ``access`` cycles after its first fetch.
+
+    The run must not pass another cog's earlier access, so the cog hands over
+    to the scheduler at that moment, not at the run's start.  ``last``: its
+    last shared access; a run that would end it at or after the end of the
+    whole run is not started (the bytecode engine stops before that write too).
+    """
+    c = RT.cog
+    t = c.t + 12
+    t += (c.hub_phase - t) & 15
+    if t + access >= RT.limit or t + last >= RT.final:
+        RT.keys[c.id] = t + access if t + access >= RT.limit else RT.final
         RT.pause()
     c.t = t + k
 
@@ -103,13 +109,21 @@ class Engine:
 
     # ---------------------------------------------------------------- scheduler side
     def run(self, c, limit: int) -> None:
-        """The scheduler's hook: run cog ``c`` while its time is before ``limit``."""
+        """The scheduler's hook: run cog ``c`` while its next shared access is before ``limit``."""
         RT.cog = c
         RT.limit = limit
         RT.engine = self
+        RT.keys[c.id] = None
         self.scheduler = greenlet.getcurrent()
-        g = self.greenlets[c.id]
-        g.switch()
+        self.greenlets[c.id].switch()
+
+    def key(self, c) -> int:
+        """When cog ``c`` next touches shared state (the scheduler's order; see spinemu.chip.timing.access_offsets)."""
+        k = RT.keys[c.id]
+        if k is not None:
+            return k
+        t = c.t + 12
+        return t + ((c.hub_phase - t) & 15)
 
     def pause(self) -> None:
         """Back to the scheduler; returns when the scheduler runs this cog again."""
@@ -119,18 +133,11 @@ class Engine:
         if c.state == STOPPED:
             raise _CogStopped()
 
-    def start(self, c, method, args, t_first: int, dbase: int, frame_end: int = 0) -> None:
-        """Make cog ``c`` run ``method(*args)``, its first statement at the interpreter's first bytecode.
-
-        ``dbase``: where the bytecode interpreter would put the method's frame
-        (its stack starts 8 bytes below, at the return frame).
-        """
+    def attach(self, c, method, args) -> None:
+        """Cog ``c`` was just started by the chip (registers, frame and first cycle set): run ``method(*args)`` in it."""
         c.engine = self
-        c.dbase = dbase
-        self.stacks.append((c.id, (dbase - 8) & 0xFFFF, max(frame_end, dbase)))
-        c.state = RUNNING
-        c.started_at = t_first
-        c.t = self.T.interpreter_start(t_first, c.hub_phase)
+        RT.keys[c.id] = None
+        self.stacks.append((c.id, (c.dbase - 8) & 0xFFFF, max(c.par + 12, c.dbase)))
         self.greenlets[c.id] = greenlet.greenlet(lambda: self._cog_main(c, method, args))
 
     def _cog_main(self, c, method, args) -> None:
@@ -147,6 +154,9 @@ class Engine:
             self.chip.stop_cog(c, t + self.T.cogstop_at, "returned from its top method")
         except _CogStopped:
             pass
+        except RecursionError:
+            raise self.chip.fault(c, 0, "stack overflow: the translated methods call each other too deeply "
+                                        "(Python's recursion limit)") from None
 
     # ---------------------------------------------------------------- cog side (called by spin.*)
     def waitcnt(self, target: int) -> None:
@@ -166,38 +176,19 @@ class Engine:
                 self.pause()
 
     def coginit(self, cog_id: int, method, args, stack: int) -> int:
+        """COGINIT/COGNEW of a translated method: what RUN and COGINIT do on the chip."""
         chip, c = self.chip, RT.cog
         tf = spin._fetched()
+        RT.limit = -1           # the scheduler must look again (the bytecode engine reschedules too)
         if not callable(method):                        # PASM: cognew(@code, par)
             par = args[0] if args else stack
-            RT.limit = -1
             return spin.wrap(chip.coginit(c, cog_id, method, par, tf))
-        done = tf + self.T.coginit_done
-        if cog_id >= 8:
-            free = [k for k in chip.cogs if k.state == STOPPED]
-            if not free:
-                return -1
-            target = free[0]
-        else:
-            target = chip.cogs[cog_id]
-        if target.state != STOPPED:
-            chip.stop_cog(target, done, f"restarted by cog {c.id}")
-        _write_run_frame(stack, args)
-        t_first = done + (_SPINSIM_START if chip.spinsim else COG_LOAD_CYCLES)
-        keep = (target.dira, target.outa) if chip.spinsim else (0, 0)
-        target.reset_registers()
-        target.dira, target.outa = keep
-        target.par = (stack + 12 + 4 * len(args)) & 0xFFFC
-        # RUN leaves the frame, the arguments and the new interpreter's words at PAR+2..PAR+11
-        self.start(target, method, args, t_first, stack + 8, target.par + 12)
-        chip.cog_events.append((t_first, target.id, "start",
-                                f"Python method {method.__qualname__} (started by cog {c.id})"))
-        if keep != (0, 0):
-            chip.note_pins(target, t_first)
-        RT.limit = -1           # the scheduler must look again (the bytecode engine reschedules too)
-        return target.id
+        par = _write_run_frame(stack, method, args)
+        chip.next_python = (method, args)
+        return spin.wrap(chip.coginit(c, cog_id, INTERPRETER_ENTRY, par, tf))
 
     def cogstop(self, cog_id: int) -> None:
+        """COGSTOP: the target stops when the bytecode's hub instruction runs."""
         chip, c = self.chip, RT.cog
         t = spin._fetched() + self.T.cogstop_at
         target = chip.cogs[cog_id]
@@ -213,14 +204,37 @@ class Engine:
         raise RebootRequested(0)
 
 
-def _write_run_frame(stack: int, args) -> None:
-    """What Spin's RUN bytecode leaves on a new cog's stack: the return frame, a zero result, the arguments."""
-    L = RT.L
+def _write_run_frame(stack: int, method, args) -> int:
+    """What Spin's RUN bytecode leaves on a new cog's stack; returns the new cog's PAR.
+
+    The return frame, a zero result and the arguments, then the words the new
+    cog's interpreter starts from at PAR+2: pbase, vbase, dbase (= stack + 8),
+    the method's code address and its stack pointer.
+    """
+    L, W = RT.L, RT.W
     base = stack & 0xFFFC
     for k, v in enumerate((0xFFFFFFFF, 0xFFF9FFFF, 0, *args)):
         a = (base + 4 * k) & 0xFFFF
         if a < 0x8000:
             L[a >> 2] = v & 0xFFFFFFFF
+    par = (base + 12 + 4 * len(args)) & 0xFFFF
+    obj = method.__self__
+    code, frame = _method_entry(obj, method.__name__)
+    for k, v in enumerate((obj._pbase, obj._vbase, base + 8, code, par + frame)):
+        a = (par + 2 + 2 * k) & 0xFFFF
+        if a < 0x8000:
+            W[a >> 1] = v & 0xFFFF
+    return par
+
+
+def _method_entry(obj, name: str) -> tuple:
+    """``(code address, locals bytes)`` of method ``name`` of ``obj`` from its object table in hub RAM."""
+    import sys
+    index = getattr(sys.modules[type(obj).__module__], "SPIN_METHODS", {}).get(name)
+    if index is None:
+        return 0, 0
+    entry = obj._pbase + 4 * index
+    return (obj._pbase + RT.W[entry >> 1]) & 0xFFFF, RT.W[(entry + 2) >> 1]
 
 
 def instantiate(cls, mem, pbase: int, vbase: int):
@@ -262,6 +276,7 @@ def run_class(cls, image: bytes, *, max_cycles=None, compat: str = "chip", input
     T = load_timing()
     epilogue = T.reg[(0x3F, 0)]        # the ROM's COGID ($3F $89) before COGSTOP
     chip = PythonChip(image, top, epilogue, compat=compat, inputs=inputs)
+    RT.final = _NEVER if max_cycles is None else max_cycles
     result = chip.run(max_cycles)
     result.stats["stacks"] = list(chip.engine.stacks)
     return result
@@ -269,6 +284,10 @@ def run_class(cls, image: bytes, *, max_cycles=None, compat: str = "chip", input
 
 class PythonChip(Chip):
     """A :class:`~spinemu.chip.Chip` whose Spin cogs run a translated program.
+
+    The chip boots and starts cogs itself (``start_spin_cog``: the cog's
+    registers, its frame from PAR, its first cycle); this class then hands the
+    cog to the Python engine instead of the bytecode interpreter.
 
     Args:
         image: the compiled image (its hub RAM contents: DAT, strings, VAR).
@@ -281,21 +300,29 @@ class PythonChip(Chip):
         super().__init__(image, compat=compat, inputs=inputs, fast_forward=False)
         self.top = top
         self.engine = Engine(self, epilogue)
-
-    def _boot(self) -> None:
-        self._pin_waiters = []
-        self._video_ready = [0] * 8
+        self.next_python = None
         RT.attach(self.mem)
         RT.chip, RT.T, RT.engine, RT.pause = self, self.timing, self.engine, self.engine.pause
         RT.pending = None
-        t_first = 0 if self.spinsim else COG_LOAD_CYCLES
-        c = self.cogs[0]
-        c.reset_registers()
-        c.par = 0x0004
-        first = _first_method(self.top)
-        self.engine.start(c, first, (), t_first, self.header.dbase)
-        name = getattr(first, "__qualname__", None) or first.func.__qualname__
-        self.cog_events.append((t_first, 0, "start", f"Python method {name} (boot)"))
+        RT.keys = [None] * 8
+
+    def start_spin_cog(self, c, par: int, t_first: int, by) -> None:
+        super().start_spin_cog(c, par, t_first, by)
+        if self.next_python is not None:
+            method, args = self.next_python
+            self.next_python = None
+            name = method.__qualname__
+        else:                                           # the boot: the top object's first method
+            method, args = _first_method(self.top), ()
+            name = getattr(method, "__qualname__", None) or method.func.__qualname__
+        when, cog_id, kind, detail = self.cog_events[-1]
+        self.cog_events[-1] = (when, cog_id, kind, detail.replace("Spin method", f"Python {name}", 1))
+        self.engine.attach(c, method, args)
+
+    def _key(self, c) -> int:
+        if c.engine is self.engine:
+            return self.engine.key(c)
+        return super()._key(c)
 
 
 def _first_method(obj):

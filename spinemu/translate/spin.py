@@ -44,11 +44,13 @@ POSX, NEGX = 0x7FFFFFFF, -0x80000000
 class _State:
     """What the running chip shares with this module (set by spinemu.translate.runtime)."""
 
-    __slots__ = ("cog", "limit", "engine", "chip", "T", "mem", "L", "Ls", "W", "pause", "pending")
+    __slots__ = ("cog", "limit", "final", "engine", "chip", "T", "mem", "L", "Ls", "W", "pause", "pending", "keys")
 
     def __init__(self):
         self.cog = self.engine = self.chip = self.T = self.pause = self.pending = None
+        self.keys = [None] * 8
         self.limit = 0
+        self.final = 1 << 62
         self.mem = bytearray(0x10000)
         self._views()
 
@@ -797,6 +799,9 @@ class Frame:
             if not isinstance(value, local):
                 long[base + offset] = value
             offset += 4 * count
+        if base + offset > 0x8000:
+            raise RT.chip.fault(RT.cog, 0, f"stack overflow: the call needs the stack up to ${base + offset:04X}, "
+                                           "past the end of hub RAM")
         object.__setattr__(self, "_base", base)
         object.__setattr__(self, "_fields", layout)
 

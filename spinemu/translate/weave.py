@@ -43,10 +43,12 @@ def _charge_stmts(charge, anchor) -> list:
     if extra:                   # belongs to the last bytecode already paid for: first
         out.append(_call(_ADD, (extra,), anchor))
     if len(charge) > 3:
-        out.append(_call(_TICK_READ, (aligned, charge[2], charge[3]), anchor))
+        access = charge[2][0] if isinstance(charge[2], (tuple, list)) else charge[2]
+        out.append(_call(_TICK_READ, (aligned, access, charge[3]), anchor))
     elif aligned is not None:
         if len(charge) > 2:
-            out.append(_call(_TICK_AT, (aligned, charge[2]), anchor))
+            access = tuple(charge[2]) if isinstance(charge[2], (tuple, list)) else (charge[2],)
+            out.append(_call(_TICK_AT, (aligned, *access), anchor))
         else:
             out.append(_call(_TICK, (aligned,), anchor))
     return out

@@ -14,14 +14,17 @@ import os
 
 import pytest
 
+from spinemu import translate
+from spinemu.diagnostics import EmulationError
 from spinemu.translate import TranslateError
-from tests.translate.crosscheck import crosscheck
+from tests.translate.crosscheck import crosscheck, run_bytecode
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 #: cycle budget per program: the column's demos run for seconds of chip time,
 #: the semantics programs finish in well under this
-BUDGETS = {"stepper_demo.spin": 120_000_000, "simple_stepper.spin": 60_000_000, "stepper.spin": 20_000_000}
+BUDGETS = {"stepper_demo.spin": 120_000_000, "simple_stepper.spin": 60_000_000, "stepper.spin": 20_000_000,
+           "cpu_bench.spin": 120_000_000}
 DEFAULT_BUDGET = 3_000_000
 
 #: programs the translator does not handle yet, and why
@@ -45,6 +48,15 @@ def _param(path):
 @pytest.mark.parametrize("path", [_param(p) for p in spin_programs()])
 def test_python_engine_matches_the_bytecode_engine(path):
     budget = BUDGETS.get(os.path.basename(path), DEFAULT_BUDGET)
+    try:
+        bytecode_fault = run_bytecode(path, budget) and None
+    except EmulationError as exc:
+        bytecode_fault = exc
+    if bytecode_fault is not None:          # a program that faults must fault on both engines
+        with pytest.raises(EmulationError) as err:
+            translate.run_translated(path, max_cycles=budget)
+        assert bytecode_fault.message.split(":")[0] == err.value.message.split(":")[0]
+        return
     try:
         result = crosscheck(path, budget)
     except TranslateError as exc:
