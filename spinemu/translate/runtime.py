@@ -26,7 +26,7 @@ from ..chip.chip import COG_LOAD_CYCLES, Chip
 from ..chip.cog import PIN_WAIT, RUNNING, STOPPED
 from ..chip.control import Reschedule
 from ..chip.rom import INTERPRETER_ENTRY
-from ..chip.timing import load_timing
+from ..chip.timing import MATH_REF, load_timing
 from . import spin
 from .costs import drop_result_delta
 from .spin import RT, Abort
@@ -305,6 +305,9 @@ class PythonChip(Chip):
         RT.chip, RT.T, RT.engine, RT.pause = self, self.timing, self.engine, self.engine.pause
         RT.pending = None
         RT.keys = [None] * 8
+        # a division's loop beyond the reference the statements paid, by the divisor's bit length
+        table = self.timing._math[0xF6 & 0x1F]
+        RT.div_extra = [table[n] - table[MATH_REF[0xF6]] for n in range(33)]
 
     def start_spin_cog(self, c, par: int, t_first: int, by) -> None:
         super().start_spin_cog(c, par, t_first, by)

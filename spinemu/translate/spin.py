@@ -44,10 +44,11 @@ POSX, NEGX = 0x7FFFFFFF, -0x80000000
 class _State:
     """What the running chip shares with this module (set by spinemu.translate.runtime)."""
 
-    __slots__ = ("cog", "limit", "final", "engine", "chip", "T", "mem", "L", "Ls", "W", "pause", "pending", "keys")
+    __slots__ = ("cog", "limit", "final", "engine", "chip", "T", "mem", "L", "Ls", "W", "pause", "pending", "keys",
+                 "div_extra")
 
     def __init__(self):
-        self.cog = self.engine = self.chip = self.T = self.pause = self.pending = None
+        self.cog = self.engine = self.chip = self.T = self.pause = self.pending = self.div_extra = None
         self.keys = [None] * 8
         self.limit = 0
         self.final = 1 << 62
@@ -99,14 +100,26 @@ from ..chip.timing import MATH_REF as _MREF, math_param as _mparam  # noqa: E402
 
 def div(a: int, b: int) -> int:
     """Spin ``a / b``: signed, rounded toward zero; dividing by zero gives 0."""
-    _delta(0xF6, a, b)
-    return wrap(_m.div(a & M32, b & M32))
+    a = ((a + 0x80000000) & M32) - 0x80000000
+    b = ((b + 0x80000000) & M32) - 0x80000000
+    if RT.div_extra is not None:
+        RT.cog.t += RT.div_extra[abs(b).bit_length()]
+    if b == 0:
+        return 0
+    q = abs(a) // abs(b)
+    return wrap(-q if (a < 0) != (b < 0) else q)
 
 
 def mod(a: int, b: int) -> int:
     """Spin ``a // b``: the remainder, with the sign of ``a``; modulo zero gives 0."""
-    _delta(0xF7, a, b)
-    return wrap(_m.mod(a & M32, b & M32))
+    a = ((a + 0x80000000) & M32) - 0x80000000
+    b = ((b + 0x80000000) & M32) - 0x80000000
+    if RT.div_extra is not None:
+        RT.cog.t += RT.div_extra[abs(b).bit_length()]
+    if b == 0:
+        return 0
+    r = abs(a) % abs(b)
+    return -r if a < 0 else r
 
 
 def shr(a: int, n: int) -> int:
@@ -319,17 +332,54 @@ class _Array:
         self.mem[self.addr + i * self.mem.size] = value
 
 
-class _Var:
-    """A VAR (``base="var"``) or DAT (``base="dat"``) variable of a Spin object, kept in hub RAM."""
+class _Longs(_Array):
+    """A long array in hub RAM (the common case, kept short: it is a hot path)."""
 
-    __slots__ = ("offset", "count", "dat", "name")
-    size = 4
-    mem = long
+    __slots__ = ()
 
-    def __init__(self, offset: int, count: int = 1, *, dat: bool = False):
-        self.offset = offset
-        self.count = count
-        self.dat = dat
+    def __getitem__(self, i: int) -> int:
+        return RT.Ls[((self.addr + (i << 2)) & 0xFFFF) >> 2]
+
+    def __setitem__(self, i: int, value: int) -> None:
+        a = (self.addr + (i << 2)) & 0xFFFF
+        if a < 0x8000:
+            RT.L[a >> 2] = value & M32
+
+
+class _Bytes(_Array):
+    __slots__ = ()
+
+    def __getitem__(self, i: int) -> int:
+        return RT.mem[(self.addr + i) & 0xFFFF]
+
+    def __setitem__(self, i: int, value: int) -> None:
+        a = (self.addr + i) & 0xFFFF
+        if a < 0x8000:
+            RT.mem[a] = value & 0xFF
+
+
+def _view(addr: int, mem: _Memory) -> _Array:
+    if mem.size == 4:
+        return _Longs(addr, mem)
+    if mem.size == 1:
+        return _Bytes(addr, mem)
+    return _Array(addr, mem)
+
+
+class _Scalar(property):
+    """A VAR/DAT variable that is one value: a property reading and writing its hub address."""
+
+    def address(self, obj) -> int:
+        return (obj._pbase if self.dat else obj._vbase) + self.offset
+
+
+class _Elements:
+    """A VAR/DAT array: ``obj.name`` is an indexable view, made once per object (then found in its ``__dict__``)."""
+
+    __slots__ = ("offset", "count", "dat", "mem", "name")
+
+    def __init__(self, offset, count, dat, mem):
+        self.offset, self.count, self.dat, self.mem = offset, count, dat, mem
 
     def __set_name__(self, owner, name):
         self.name = name
@@ -340,61 +390,57 @@ class _Var:
     def __get__(self, obj, owner=None):
         if obj is None:
             return self
-        a = (obj._pbase if self.dat else obj._vbase) + self.offset
-        if self.count != 1:
-            return _Array(a, self.mem)
-        return self._read(a)
-
-    def __set__(self, obj, value: int) -> None:
-        a = (obj._pbase if self.dat else obj._vbase) + self.offset
-        if a < 0x8000:
-            self._write(a, value)
+        view = _view(self.address(obj), self.mem)
+        obj.__dict__[self.name] = view
+        return view
 
 
-class Long(_Var):
-    """A long variable (or array of ``count`` longs) at ``offset`` in the object's VAR (or DAT) block."""
+def _variable(offset: int, count: int, dat: bool, mem: _Memory):
+    if count != 1:
+        return _Elements(offset, count, dat, mem)
+    base = "_pbase" if dat else "_vbase"
+    if mem.size == 4:
+        def get(obj):
+            return RT.Ls[(getattr(obj, base) + offset) >> 2]
 
-    __slots__ = ()
+        def put(obj, value):
+            a = getattr(obj, base) + offset
+            if a < 0x8000:
+                RT.L[a >> 2] = value & M32
+    elif mem.size == 2:
+        def get(obj):
+            return RT.W[(getattr(obj, base) + offset) >> 1]
 
-    @staticmethod
-    def _read(a):
-        return RT.Ls[a >> 2]
+        def put(obj, value):
+            a = getattr(obj, base) + offset
+            if a < 0x8000:
+                RT.W[a >> 1] = value & 0xFFFF
+    else:
+        def get(obj):
+            return RT.mem[getattr(obj, base) + offset]
 
-    @staticmethod
-    def _write(a, v):
-        RT.L[a >> 2] = v & M32
+        def put(obj, value):
+            a = getattr(obj, base) + offset
+            if a < 0x8000:
+                RT.mem[a] = value & 0xFF
+    var = _Scalar(get, put)
+    var.offset, var.count, var.dat, var.mem = offset, count, dat, mem
+    return var
 
 
-class Word(_Var):
+def Long(offset: int, count: int = 1, *, dat: bool = False):  # noqa: N802 - reads as a type in class bodies
+    """A long variable (or array of ``count`` longs) at ``offset`` in the object's VAR block (or DAT: from its start)."""
+    return _variable(offset, count, dat, long)
+
+
+def Word(offset: int, count: int = 1, *, dat: bool = False):  # noqa: N802
     """A word variable (16 bits, read as 0..65535)."""
-
-    __slots__ = ()
-    size = 2
-    mem = word
-
-    @staticmethod
-    def _read(a):
-        return RT.W[a >> 1]
-
-    @staticmethod
-    def _write(a, v):
-        RT.W[a >> 1] = v & 0xFFFF
+    return _variable(offset, count, dat, word)
 
 
-class Byte(_Var):
+def Byte(offset: int, count: int = 1, *, dat: bool = False):  # noqa: N802
     """A byte variable (8 bits, read as 0..255)."""
-
-    __slots__ = ()
-    size = 1
-    mem = byte
-
-    @staticmethod
-    def _read(a):
-        return RT.mem[a]
-
-    @staticmethod
-    def _write(a, v):
-        RT.mem[a] = v & 0xFF
+    return _variable(offset, count, dat, byte)
 
 
 class Child:
@@ -425,7 +471,7 @@ class Object:
         """The variable ``name`` seen as an array (Spin's ``name[i]`` on any variable, ``name.byte[i]``)."""
         var = getattr(type(self), name)
         mem = {1: byte, 2: word, 4: long}[size] if size else var.mem
-        return _Array(var.address(self) + index * var.mem.size, mem)
+        return _view(var.address(self) + index * var.mem.size, mem)
 
     def addr(self, name: str, index: int = 0) -> int:
         """Spin's ``@name`` (``@name[index]``): the hub address of a VAR or DAT variable."""
