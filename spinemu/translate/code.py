@@ -34,12 +34,15 @@ class Code:
         self._last_spin = 0
 
     # ------------------------------------------------------------------ lines
-    def line(self, text: str, spin_line=None) -> int:
-        """Add one line at the current indentation; returns its 1-based number."""
+    def line(self, text: str, spin_line=None, note: str = "") -> int:
+        """Add one line at the current indentation; returns its 1-based number.
+
+        ``note``: said in the trailing comment before the Spin comment.
+        """
         out = "    " * self.indent + text if text else ""
         if spin_line is not None:
             tag = f"L{spin_line}"
-            note = self.trailing_comment(spin_line)
+            note = " ".join(n for n in (note, self.trailing_comment(spin_line)) if n)
             if note:
                 tag += f": {note}"
             out = out.ljust(COMMENT_COLUMN - 2) + "  # " + tag if len(out) < COMMENT_COLUMN - 2 \

@@ -253,7 +253,7 @@ class ObjectTranslator:
         code.raw("")
         code.raw(f"class {cls}(spin.Object):")
         code.indent = 1
-        code.line('"""' + (" ".join(doc[:1]).strip() or f"The Spin object {os.path.basename(self.unit.path)}.") + '"""')
+        code.line('"""' + _summary(doc, self.unit.path) + '"""')
         code.line("")
         code.line(f'SPIN_FIRST_METHOD = "{self.names.attr(self.cobj.methods[0].name)}"'
                   if self.cobj.methods else "SPIN_FIRST_METHOD = None")
@@ -300,9 +300,10 @@ class ObjectTranslator:
                 continue
             text = _con_text(c, self.oc, value)
             spin_text = _con_source(self.unit.spin, c)
-            if spin_text and text != spin_text and not text.replace(" ", "").startswith(spin_text.replace(" ", "")):
-                text += f"  # = {spin_text}"
-            code.line(f"{self.names.attr(c.name)} = {text}", c.pos.line)
+            plain = isinstance(c, A.ConDef) and (isinstance(c.value, A.Number) or text == spin_text)
+            note = f"{spin_text}:" if spin_text and not plain and not text.startswith(spin_text) else ""
+            code.line(f"{self.names.attr(c.name)} = {text}", c.pos.line, note=note.rstrip(":")
+                      if not self.unit.spin.comments_at(c.pos.line) else note)
 
     def variables(self, code: Code) -> None:
         syms = {key(v.name): v for v in self.oc.symbols.vars}
@@ -484,6 +485,14 @@ def _file_doc(spin) -> list:
     return out
 
 
+def _summary(doc: list, path: str) -> str:
+    """One line about the object: the file header's "Purpose" line, else its first line."""
+    for d in doc:
+        if d.lower().startswith("purpose"):
+            return d.split(" ", 1)[-1].lstrip(". ").strip() or d
+    return doc[0] if doc else f"The Spin object {os.path.basename(path)}."
+
+
 def _method_doc(spin, m) -> list:
     out = []
     n = m.pos.line + 1
@@ -532,6 +541,9 @@ def _count_mentions(body, name: str) -> int:
 def _needs_init(m, name: str) -> bool:
     """Does local ``name`` need ``= 0`` at the start (is it possibly read before the first assignment)?"""
     for st in m.body:
+        if isinstance(st, A.RepeatFrom) and isinstance(st.var, A.NameRef) and key(st.var.name) == key(name) \
+                and not _count_mentions([st.start, st.stop] + ([st.step] if st.step else []), key(name)):
+            return False
         if isinstance(st, A.ExprStmt) and isinstance(st.expr, A.Assign) and st.expr.op == ":=" \
                 and isinstance(st.expr.target, A.NameRef) and key(st.expr.target.name) == key(name) \
                 and _count_mentions([st.expr.value], key(name)) == 0:

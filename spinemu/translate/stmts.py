@@ -25,6 +25,8 @@ Costs come from the compiler's own bytecode for each piece (costs.py).
 """
 from __future__ import annotations
 
+import re
+
 from ..compiler.code import CodeBuffer, Label
 from ..compiler.exprs import USING, push_const_bytes
 from ..compiler import stmts as cstmts
@@ -320,7 +322,9 @@ class MethodTranslator(ExprTranslator):
         """The target as an assignment target; saves ``value`` first if the target hoists code."""
         before = len(self.hoisted)
         text = self.expr(target).text
-        if len(self.hoisted) > before and value.const is None and not value.text.isidentifier():
+        written = [h.split(" ")[0] for h in self.hoisted[before:]]
+        if (any(w in value.text for w in written) or (written and _has_call(value.text))) and value.const is None \
+                and not value.text.isidentifier():
             tmp = self.temp("value")
             self.hoisted.insert(mark, f"{tmp} = {value.text}")
             value = X(tmp, wrapped=value.wrapped, boolean=value.boolean)
@@ -346,7 +350,7 @@ class MethodTranslator(ExprTranslator):
         text, value = self.target_text(target, value, mark)
         local = self.is_local(target)
         if op in _PY_AUG and not local and not value.boolean:
-            self.hoisted.append(f"{text} {op}= {value.paren(10)}")
+            self.hoisted.append(f"{text} {op}= {value.text}")
             return
         new = self.binop(op, X(text), value)
         self.hoisted.append(f"{text} = {(self.wrapped(new) if local or new.boolean else new).text}")
@@ -639,8 +643,12 @@ class MethodTranslator(ExprTranslator):
             self.charge(first or iff, "b", pre)
             self.charge(brk, "b", post)
             self.charge_add(brk, "b", jz_taken.rest - jz_not.rest)
-            body_first, last = self.loop_block(st.body, _LoopInfo("while"))
-            self.charge(body_first, "b", post)
+            if st.body:
+                body_first, last = self.loop_block(st.body, _LoopInfo("while"))
+                self.charge(body_first, "b", post)
+            else:                       # ``repeat until x``: the loop is just its test
+                self.charge(iff, "a", post)
+                last = iff
         else:
             line = self.emit(f"while {test}:", st)
             body_first, last = self.loop_block(st.body, _LoopInfo("while"))
@@ -717,6 +725,15 @@ class MethodTranslator(ExprTranslator):
         last = ops[-1]
         base = last.rest - self.T.repeat[(reg, stepped, True, False)]
         return ops[:-1] + [Op(last.code, base + self.T.repeat[(reg, stepped, inside, long)], last.kind)]
+
+
+_CALL = re.compile(r"\bself\.(?!(?:addr|at|string|object_base)\()\w+(?:\[[^\]]*\])?(?:\.\w+)*\(|"
+                   r"\bspin\.(?:trap|cognew|coginit|lock\w+)\(")
+
+
+def _has_call(text: str) -> bool:
+    """Does a translated expression call a method (so that Spin's evaluation order matters)?"""
+    return bool(_CALL.search(text))
 
 
 def _from_to_count(a, b, s):
