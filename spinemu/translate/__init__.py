@@ -20,8 +20,9 @@ import shutil
 import tempfile
 
 from .program import TranslateError, translate_program
+from .weave import load_package
 
-__all__ = ["translate_file", "side_by_side", "run_translated", "run_package", "TranslateError"]
+__all__ = ["translate_file", "side_by_side", "run_translated", "run_package", "load_package", "TranslateError"]
 
 _IMAGE_NAME = "spin_image.binary"
 
@@ -68,7 +69,7 @@ def translate_file(src_path, out_dir, include_dirs=()) -> list[str]:
 
 
 def run_package(package, max_cycles=None, compat: str = "chip", inputs=None):
-    """Run a package written by :func:`translate_file` (imported) on a chip.
+    """Run a package written by :func:`translate_file` (imported, e.g. with :func:`load_package`) on a chip.
 
     Returns:
         a :class:`spinemu.chip.RunResult`, as the bytecode engine gives.

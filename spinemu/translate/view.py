@@ -51,12 +51,13 @@ def _table(module) -> Table:
         spin_text = fh.read()
     table = Table(title=f"{os.path.basename(module.spin_path)}  ->  {module.module}.py",
                   show_lines=False, expand=True, pad_edge=False)
-    table.add_column("#", justify="right", style="dim", no_wrap=True)
-    table.add_column("Spin", no_wrap=True, overflow="ellipsis")
-    table.add_column("Python", no_wrap=True, overflow="ellipsis")
+    table.add_column("Spin", no_wrap=True, overflow="ellipsis", ratio=1)
+    table.add_column("Python", no_wrap=True, overflow="ellipsis", ratio=1)
     for n, spin, py in aligned_rows(spin_text, module):
         python = Syntax(py, "python", theme="ansi_dark", background_color="default") if py.strip() else Text("")
-        table.add_row(str(n) if n is not None else "", Text(spin.expandtabs(8)), python)
+        left = Text(f"{n:>4} " if n is not None else "     ", style="dim")
+        left.append(spin.expandtabs(8))
+        table.add_row(left, python)
     return table
 
 

@@ -125,8 +125,13 @@ def prepare(cls) -> None:
 _loaded = 0
 
 
-def load_package(out_dir: str):
-    """Import the generated modules in ``out_dir`` as a fresh package; returns the package module."""
+def load_package(out_dir):
+    """Import the generated modules in ``out_dir`` as a fresh package; returns the package module.
+
+    Its ``TOP`` is the top object's class; each module is importable as
+    ``package.<module>`` (``importlib.import_module(package.__name__ + ".stepper")``).
+    """
+    out_dir = os.fspath(out_dir)
     global _loaded
     _loaded += 1
     name = f"spinemu_translated_{_loaded}"
