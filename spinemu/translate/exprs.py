@@ -22,7 +22,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..frontend import ast as A
-from ..frontend.ast import key
 from ..frontend.constants import float_bits
 
 __all__ = ["X", "ExprTranslator", "PREC"]

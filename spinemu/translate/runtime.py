@@ -22,8 +22,8 @@ from __future__ import annotations
 
 import greenlet
 
-from ..chip.chip import COG_LOAD_CYCLES, Chip
-from ..chip.cog import PIN_WAIT, RUNNING, STOPPED
+from ..chip.chip import Chip
+from ..chip.cog import PIN_WAIT, STOPPED
 from ..chip.control import Reschedule
 from ..chip.rom import INTERPRETER_ENTRY
 from ..chip.timing import MATH_REF, load_timing
