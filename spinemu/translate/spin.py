@@ -98,12 +98,18 @@ def _delta(op: int, x: int, y: int) -> None:
 from ..chip.timing import MATH_REF as _MREF, math_param as _mparam  # noqa: E402
 
 
-def div(a: int, b: int) -> int:
-    """Spin ``a / b``: signed, rounded toward zero; dividing by zero gives 0."""
+def _divide(a: int, b: int) -> tuple:
+    """Both operands as Spin longs; pays the division loop's cycles (by the divisor's bit length)."""
     a = ((a + 0x80000000) & M32) - 0x80000000
     b = ((b + 0x80000000) & M32) - 0x80000000
     if RT.div_extra is not None:
         RT.cog.t += RT.div_extra[abs(b).bit_length()]
+    return a, b
+
+
+def div(a: int, b: int) -> int:
+    """Spin ``a / b``: signed, rounded toward zero; dividing by zero gives 0."""
+    a, b = _divide(a, b)
     if b == 0:
         return 0
     q = abs(a) // abs(b)
@@ -112,10 +118,7 @@ def div(a: int, b: int) -> int:
 
 def mod(a: int, b: int) -> int:
     """Spin ``a // b``: the remainder, with the sign of ``a``; modulo zero gives 0."""
-    a = ((a + 0x80000000) & M32) - 0x80000000
-    b = ((b + 0x80000000) & M32) - 0x80000000
-    if RT.div_extra is not None:
-        RT.cog.t += RT.div_extra[abs(b).bit_length()]
+    a, b = _divide(a, b)
     if b == 0:
         return 0
     r = abs(a) % abs(b)

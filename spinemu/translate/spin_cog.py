@@ -11,6 +11,7 @@ Hot paths: :data:`cog`'s register properties.
 """
 from __future__ import annotations
 
+from ..chip.spin import _reverse_bits as _reverse
 from .spin import M32, RT, byte, flag, long, word, wrap
 
 __all__ = [
@@ -57,14 +58,6 @@ def _field(key):
         lo, hi = (a, b) if rev else (b, a)
         return lo, hi - lo + 1, rev
     return key & 31, 1, False
-
-
-def _reverse(v: int, width: int) -> int:
-    r = 0
-    for _ in range(width):
-        r = (r << 1) | (v & 1)
-        v >>= 1
-    return r
 
 
 class Register(int):
