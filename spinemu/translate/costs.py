@@ -185,7 +185,7 @@ def _kind(data, i, op) -> str:
         return "call"
     if op in (0x1B, 0x1F, 0x23):
         return "wait"
-    if op in (0x21, 0x28, 0x2C):
+    if op in (0x20, 0x21, 0x28, 0x2C):        # CLKSET, COGSTOP, COGINIT
         return "cog"
     if op in (0x3D, 0x3E, 0x3F):
         if not data[i + 1] & 0x10:

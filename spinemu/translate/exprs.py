@@ -73,7 +73,10 @@ def number_text(node) -> str:
         return "0b" + t[1:].lstrip("_")
     if t.startswith("$"):
         return "0x" + t[1:].lstrip("_")
-    return t if t.replace("_", "").isdigit() else str(v)
+    if t.replace("_", "").isdigit():
+        t = t.lstrip("0_") or "0"           # Python has no leading zeros in decimals
+        return t if not t.endswith("_") else str(v)
+    return str(v)
 
 
 class ExprTranslator:

@@ -200,7 +200,10 @@ class Engine:
             RT.limit = -1
 
     def reboot(self) -> None:
+        """CLKSET with bit 7: the chip reboots when the bytecode's fetch completes (as the bytecode engine stops)."""
         from ..chip.control import RebootRequested
+        c = RT.cog
+        c.t = spin._fetched()
         raise RebootRequested(0)
 
 

@@ -185,16 +185,16 @@ def cogstop(cog_id: int) -> None:
 
 
 def reboot() -> None:
-    """Restart the chip."""
-    RT.engine.reboot()
+    """Restart the chip (Spin compiles it as ``clkset($80, 0)``)."""
+    clkset(0x80, 0)
 
 
 def clkset(mode: int, freq: int) -> None:
-    """Set the clock mode and frequency (stored in hub RAM, as Spin does)."""
+    """Set the clock mode and frequency (stored in hub RAM, as Spin does); mode bit 7 reboots."""
     RT.L[0] = freq & M32
     RT.mem[4] = mode & 0xFF
     if mode & 0x80:
-        reboot()
+        RT.engine.reboot()
     RT.chip.set_clock(mode & 0xFF, freq & M32)
 
 
