@@ -172,7 +172,13 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
 
     # ------------------------------------------------------------------ emitting
     def emit(self, text: str, node=None) -> int:
-        return self.code.line(text, node.pos.line if node is not None else None)
+        line = self.code.line(text, node.pos.line if node is not None else None)
+        for _ in range(text.count("spin.look")):
+            if self.pending_lookups:                # what each lookup item costs, for the runtime
+                costs = self.pending_lookups.pop(0)
+                self.code.lookups[line] = ([c for c, _ in costs], ceil16(self.T.look_done + 12),
+                                           [f for _, f in costs])
+        return line
 
     def block(self, stmts) -> tuple:
         """Emit a body (indented); ``(first line, last statement line)``."""
@@ -202,10 +208,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         for text in lines:
             last = self.emit(text, node)
             first = first or last
-            if "spin.look" in text and self.pending_lookups:
-                costs = self.pending_lookups.pop(0)
-                self.code.lookups[last] = ([c for c, _ in costs], ceil16(self.T.look_done + 12),
-                                           [f for _, f in costs])
+
         if first is None:
             first = last = self.emit("pass", node)
         return first, last
