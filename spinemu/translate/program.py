@@ -42,7 +42,7 @@ from .stmts import MethodTranslator
 __all__ = ["TranslateError", "ModuleText", "translate_program"]
 
 _RESERVED_LOCALS = {"self", "spin", "cog", "wrap", "range", "max", "min", "abs", "ord"}
-_RESERVED_ATTRS = {"at", "addr", "object_base", "string", "_pbase", "_vbase", "mro", "spin", "cog", "wrap"}
+_RESERVED_ATTRS = {"at", "addr", "object_base", "string", "_pbase", "_vbase", "mro", "spin"}
 
 
 class TranslateError(SpinError):

@@ -271,10 +271,16 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         return self.ending(st, f"raise spin.Abort({value}, bare=True)")
 
     def ending(self, st, main) -> tuple:
+        """``return``/``abort``: what comes after a call in the value is paid after the value (weave.py)."""
         ops = self.piece(lambda: self.mc.block([st]))
         first, last = self.flush(main, st)
         self.note_depths(range(first, last + 1))
-        self.charge(first, "b", ops)
+        pre, post = split(ops)
+        pre, mid = split_read(pre)
+        self.charge(first, "b", pre)
+        if mid:
+            self.code.charge_mid(first, mid)
+        self.charge(last, "a", post)
         return first, last
 
     def s_Next(self, st) -> tuple:

@@ -80,6 +80,16 @@ def _weave_body(stmts: list, table: dict) -> list:
             charge = _charge_stmts(row[3], s)
             s.test = ast.copy_location(ast.BoolOp(ast.Or(), [c.value for c in charge] + [s.test]), s.test)
         out.extend(_charge_stmts(before, s))
+        if after is not None and isinstance(s, (ast.Return, ast.Raise)) and \
+                getattr(s, "value" if isinstance(s, ast.Return) else "exc", None) is not None:
+            # paid once the value is computed, before leaving: ``value = ...; tick(); return value``
+            field = "value" if isinstance(s, ast.Return) else "exc"
+            keep = ast.copy_location(ast.Assign([ast.Name("__spin_value", ast.Store())], getattr(s, field)), s)
+            out.append(ast.fix_missing_locations(keep))
+            out.extend(_charge_stmts(after, s))
+            setattr(s, field, ast.copy_location(ast.Name("__spin_value", ast.Load()), s))
+            out.append(ast.fix_missing_locations(s))
+            continue
         out.append(s)
         if other is not None and isinstance(s, (ast.If, ast.While, ast.For)):
             s.orelse = _charge_stmts(other, s) + s.orelse
