@@ -66,7 +66,7 @@ class Code:
         text = self.spin.source.line(spin_line) or ""
         notes = [c.text.strip() for c in self.spin.comments_at(spin_line)
                  if c.kind in ("'", "''", "{", "{{") and text[: c.col - 1].strip()]
-        return " ".join(n for n in notes if n)
+        return " ".join(" ".join(n.split()) for n in notes if n)     # a block comment becomes one line
 
     def comments_before(self, spin_line: int) -> None:
         """Carry over the Spin comments on lines of their own before ``spin_line``."""

@@ -106,12 +106,14 @@ class Names:
     def attr(self, name: str) -> str:
         return self.attrs.get(key(name), _py_name(name, _RESERVED_ATTRS))
 
-    def set_method(self, method) -> None:
+    def set_method(self, method, in_frame: bool = False) -> None:
+        """Names for ``method``'s result, parameters and locals (``in_frame``: they are ``spin.Frame`` fields)."""
         self.locals = {}
+        reserved = _RESERVED_LOCALS | ({"addr", "at"} if in_frame else set())
         names = ([method.result] if method.result else []) + [p for p, _ in method.params] + \
             [loc.name for loc in method.locals]
         for n in names:
-            self.locals.setdefault(key(n), _py_name(n, _RESERVED_LOCALS))
+            self.locals.setdefault(key(n), _py_name(n, reserved))
 
     def local(self, name: str) -> str:
         return self.locals.get(key(name), _py_name(name, _RESERVED_LOCALS))
@@ -294,11 +296,13 @@ class ObjectTranslator:
             return
         code.line("")
         code.line("# CON: constants")
+        defined = set()
         for c in items:
             value = self.oc.const(c.name)
             if value is None:
                 continue
-            text = _con_text(c, self.oc, value)
+            text = _con_text(c, self.oc, value, defined, self.names)
+            defined.add(key(c.name))
             spin_text = _con_source(self.unit.spin, c)
             plain = isinstance(c, A.ConDef) and (isinstance(c.value, A.Number) or text == spin_text)
             note = f"{spin_text}:" if spin_text and not plain and not text.startswith(spin_text) else ""
@@ -340,7 +344,8 @@ class ObjectTranslator:
             code.line(f"{self.names.attr(s.name)} = spin.{kind[s.size]}({s.offset}{extra}, dat=True)", s.pos.line)
 
     def method(self, code: Code, m) -> None:
-        self.names.set_method(m)
+        from .stmts import needs_hub_frame
+        self.names.set_method(m, needs_hub_frame(m))
         params = "".join(f", {self.names.local(p)}" for p, _ in m.params)
         code.line("")
         code.comments_before(m.pos.line)
@@ -425,18 +430,35 @@ def _dat_counts(unit, oc) -> dict:
     return counts
 
 
-def _con_text(c, oc, value) -> str:
+def _con_text(c, oc, value, defined: set, names) -> str:
+    """A constant's Python value: its Spin expression if it only uses numbers and constants
+    defined above it in the class, else the folded value."""
     from .exprs import number_text
     bits = value.bits
     v = bits - (1 << 32) if bits & 0x80000000 else bits
-    if isinstance(c, A.ConDef):
+    if isinstance(c, A.ConDef) and not value.is_float:
         e = c.value
         if isinstance(e, A.Number):
             return number_text(e)
-        simple = _simple_con_expr(e)
-        if simple is not None:
+        simple = _simple_con_expr(e, defined, names)
+        if simple is not None and _python_value(e, oc) == v:      # no 32-bit wrap-around in it
             return simple
     return str(v)
+
+
+def _python_value(e, oc):
+    """What Python computes for a simple constant expression (None if it cannot)."""
+    if isinstance(e, A.Number):
+        return e.value - (1 << 32) if e.value & 0x80000000 else e.value
+    if isinstance(e, A.NameRef):
+        c = oc.const(e.name)
+        return None if c is None else (c.bits - (1 << 32) if c.bits & 0x80000000 else c.bits)
+    if isinstance(e, A.Paren):
+        return _python_value(e.expr, oc)
+    left, right = _python_value(e.left, oc), _python_value(e.right, oc)
+    if left is None or right is None:
+        return None
+    return {"+": left + right, "-": left - right, "*": left * right}[e.op]
 
 
 def _con_source(spin, c) -> str:
@@ -449,16 +471,17 @@ def _con_source(spin, c) -> str:
     return value.split(",")[0].strip()
 
 
-def _simple_con_expr(e):
+def _simple_con_expr(e, defined: set, names):
     if isinstance(e, A.Number):
-        return str(e.value) if e.value < 0x80000000 else None
-    if isinstance(e, A.NameRef) and e.index is None:
-        return e.name
+        from .exprs import number_text
+        return number_text(e) if e.value < 0x80000000 else None
+    if isinstance(e, A.NameRef) and e.index is None and key(e.name) in defined:
+        return names.attr(e.name)
     if isinstance(e, A.Paren):
-        inner = _simple_con_expr(e.expr)
+        inner = _simple_con_expr(e.expr, defined, names)
         return f"({inner})" if inner else None
     if isinstance(e, A.Binary) and e.op in ("+", "-", "*"):
-        left, right = _simple_con_expr(e.left), _simple_con_expr(e.right)
+        left, right = _simple_con_expr(e.left, defined, names), _simple_con_expr(e.right, defined, names)
         if left and right:
             return f"{left} {e.op} {right}"
     return None
