@@ -89,7 +89,8 @@ class Code:
         return entry.setdefault(slot, [[], 0])
 
     def charge(self, line: int, slot: str, ops) -> None:
-        """Charge a run of bytecodes ``ops`` at ``slot`` of ``line`` (b: before, a: after, e: else/exit)."""
+        """Charge a run of bytecodes ``ops`` at ``slot`` of ``line`` (b: before, a: after, e: else/exit,
+        t: each test of a ``while``, p: the statement's own rest, before it stores or returns)."""
         self._slot(line, slot)[0].extend(ops)
 
     def charge_add(self, line: int, slot: str, cycles: int) -> None:
@@ -105,7 +106,10 @@ class Code:
         self.charges.setdefault(line, {})["each"] = [list(r) for r in runs]
 
     def charge_table(self) -> dict:
-        """``{line: (before, after, else[, test])}``, each ``(aligned, extra[, access])`` or None.
+        """``{line: (before, after, else[, test[, post]])}``, each ``(aligned, extra[, access])`` or None.
+
+        ``post``: the statement's own bytecodes after its call or read, paid before
+        its store (weave.py); ``after``: what the block pays after it (a jump back).
 
         ``access``: cycles from the fetch of the run's first bytecode to the start of its
         first shared hub access (the moment the run must not pass other cogs).
@@ -113,7 +117,7 @@ class Code:
         table = {}
         for line, entry in sorted(self.charges.items()):
             row = []
-            for slot in "baet":
+            for slot in "baetp":
                 ops, extra = entry.get(slot, [[], 0])
                 k = chain(ops)
                 a = access_range(ops)
@@ -127,7 +131,7 @@ class Code:
             each = entry.get("each")
             if each:
                 row[3] = tuple((chain(r), 0) for r in each)
-            if not row[3]:
+            while len(row) > 3 and not row[-1]:
                 row.pop()
             if any(row):
                 table[line] = tuple(row)

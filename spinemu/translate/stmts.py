@@ -66,6 +66,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.loops: list = []
         self.temps: set = set()
         self.pending_lookups: list = []
+        self.exits: set = set()             # lines that leave their block (return, raise, break, continue)
         self.last_data = b""
         self.cur_pos = method.pos
         self.path = method.pos.path
@@ -163,11 +164,12 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         return sum(ceil16(o.rest + 12) for o in ops) + missed, found - missed
 
     def charge(self, line: int, slot: str, ops) -> None:
-        if line is not None and ops:
+        """Charge ``ops`` at ``slot`` of ``line``; nothing runs after a return, abort, next or quit."""
+        if line is not None and ops and not (slot == "a" and line in self.exits):
             self.code.charge(line, slot, list(ops))
 
     def charge_add(self, line: int, slot: str, cycles: int) -> None:
-        if line is not None and cycles:
+        if line is not None and cycles and not (slot == "a" and line in self.exits):
             self.code.charge_add(line, slot, cycles)
 
     # ------------------------------------------------------------------ emitting
@@ -239,8 +241,8 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         if mid:
             self.code.charge_mid(first, mid)
         if t in (A.Call, A.ObjCall) or (t is A.NameRef and main):
-            self.charge_add(last, "a", drop_result_delta(self.T))
-        self.charge(last, "a", post)
+            self.charge_add(last, "p", drop_result_delta(self.T))
+        self.charge(last, "p", post)
         return first, last
 
     def run_params(self, st) -> int:
@@ -280,7 +282,8 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.charge(first, "b", pre)
         if mid:
             self.code.charge_mid(first, mid)
-        self.charge(last, "a", post)
+        self.charge(last, "p", post)            # paid between the value and leaving (weave.py)
+        self.exits.add(last)
         return first, last
 
     def s_Next(self, st) -> tuple:
@@ -290,6 +293,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         ops = self.case_pops(loop) + [jump_op(self.T, "JMP")] + loop.next_ops
         line = self.emit("continue", st)
         self.charge(line, "b", ops)
+        self.exits.add(line)
         return line, line
 
     def s_Quit(self, st) -> tuple:
@@ -297,6 +301,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         ops = self.case_pops(loop) + [jump_op(self.T, loop.quit_op, taken=True)]
         line = self.emit("break", st)
         self.charge(line, "b", ops)
+        self.exits.add(line)
         return line, line
 
     def loop_of(self, st, word):

@@ -68,6 +68,7 @@ def _weave_body(stmts: list, table: dict) -> list:
             out.append(s)
             continue
         before, after, other = row[:3]
+        post = row[4] if len(row) > 4 else None
         if len(row) > 3 and isinstance(s, ast.If) and isinstance(s.test, ast.BoolOp) \
                 and isinstance(s.test.op, ast.Or) and len(s.test.values) == len(row[3]):
             # one charge before each alternative: ``if tick(a) or x == 1 or tick(b) or x == 2:``
@@ -80,19 +81,22 @@ def _weave_body(stmts: list, table: dict) -> list:
             charge = _charge_stmts(row[3], s)
             s.test = ast.copy_location(ast.BoolOp(ast.Or(), [c.value for c in charge] + [s.test]), s.test)
         out.extend(_charge_stmts(before, s))
-        if after is not None and isinstance(s, (ast.Return, ast.Raise)) and \
-                getattr(s, "value" if isinstance(s, ast.Return) else "exc", None) is not None:
-            # paid once the value is computed, before leaving: ``value = ...; tick(); return value``
-            field = "value" if isinstance(s, ast.Return) else "exc"
+        if post is not None and isinstance(s, (ast.Return, ast.Raise, ast.Assign, ast.AugAssign)) and \
+                getattr(s, "exc" if isinstance(s, ast.Raise) else "value", None) is not None:
+            # paid once the value is computed, before it is stored or returned:
+            # ``value = ...; tick(); x = value`` (a store after the run's end does not happen)
+            field = "exc" if isinstance(s, ast.Raise) else "value"
             keep = ast.copy_location(ast.Assign([ast.Name("__spin_value", ast.Store())], getattr(s, field)), s)
             out.append(ast.fix_missing_locations(keep))
-            out.extend(_charge_stmts(after, s))
+            out.extend(_charge_stmts(post, s))
             setattr(s, field, ast.copy_location(ast.Name("__spin_value", ast.Load()), s))
             out.append(ast.fix_missing_locations(s))
+            out.extend(_charge_stmts(after, s))
             continue
         out.append(s)
         if other is not None and isinstance(s, (ast.If, ast.While, ast.For)):
             s.orelse = _charge_stmts(other, s) + s.orelse
+        out.extend(_charge_stmts(post, s))
         out.extend(_charge_stmts(after, s))
     return out
 
