@@ -37,11 +37,15 @@ __all__ = ["LoopTranslator"]
 
 
 class _LoopInfo:
+    """An open loop: what ``next`` and ``quit`` cost, and for loops whose test Python's
+    ``continue`` would skip, ``emit_next(lead_ops)`` writes that test before the ``continue``."""
+
     def __init__(self, kind, next_ops=(), quit_op="JMP"):
         self.kind = kind
         self.next_ops = list(next_ops)
         self.quit_op = quit_op
         self.cases = 0
+        self.emit_next = None
 
 
 class LoopTranslator:
@@ -86,23 +90,14 @@ class LoopTranslator:
         size = self.body_size(st.body)
         cond_ops = self.expr_ops(st.cond)
         if st.post:
-            j = "JZ" if st.until else "JNZ"          # jumps back to the top while the loop goes on
             long_j = size + 3 > 64
             line = self.emit("while True:", st)
-            _, last = self.loop_block(st.body, _LoopInfo("post"))
+            info = _LoopInfo("post")
+            info.emit_next = lambda lead: self._post_test(st, cond_ops, long_j, lead)
+            _, last = self.loop_block(st.body, info)
             self.code.indent += 1
-            c = self.cond(st.cond)
-            test = c if st.until else (f"not ({c})" if " " in c else f"not {c}")
-            first, _ = self.flush(None, st.cond) if self.hoisted else (None, None)
-            iff = self.emit(f"if {test}:", st.cond)
-            pre, post = split(cond_ops + [jump_op(T, j, long_j, True)])
-            self.charge(first or iff, "b", pre)
-            self.charge(iff, "e", post)
-            self.code.indent += 1
-            brk = self.emit("break", st.cond)
-            self.charge(brk, "b", post)
-            self.charge_add(brk, "b", jump_op(T, j, long_j, False).rest - jump_op(T, j, long_j, True).rest)
-            self.code.indent -= 2
+            self._post_test(st, cond_ops, long_j, [])
+            self.code.indent -= 1
             return line, line
         j = "JNZ" if st.until else "JZ"
         c = self.cond(st.cond)
@@ -178,18 +173,44 @@ class LoopTranslator:
         first, _ = self.flush(f"{target} = {start}", st)
         self.charge(first, "b", init)
         line = self.emit("while True:", st)
-        _, last = self.loop_block(st.body, _LoopInfo("general"))
+        info = _LoopInfo("general")
+        info.emit_next = lambda lead: self._from_step(st, target, start, stop_t, step_t, step_ops, delta, lead)
+        _, last = self.loop_block(st.body, info)
         self.code.indent += 1
+        self._from_step(st, target, start, stop_t, step_t, step_ops, delta, [])
+        self.code.indent -= 1
+        return first, line
+
+    def _post_test(self, st, cond_ops, long_j: bool, lead) -> int:
+        """``[hoisted]; if <leave>: break`` of ``repeat ... while/until c``; ``lead``: ops paid first (a ``next``)."""
+        T = self.T
+        j = "JZ" if st.until else "JNZ"          # jumps back to the top while the loop goes on
+        c = self.cond(st.cond)
+        test = c if st.until else (f"not ({c})" if " " in c else f"not {c}")
+        first, _ = self.flush(None, st.cond) if self.hoisted else (None, None)
+        iff = self.emit(f"if {test}:", st.cond)
+        pre, post = split(list(lead) + cond_ops + [jump_op(T, j, long_j, True)])
+        self.charge(first or iff, "b", pre)
+        self.charge(iff, "e", post)
+        self.code.indent += 1
+        brk = self.emit("break", st.cond)
+        self.charge(brk, "b", post)
+        self.charge_add(brk, "b", jump_op(T, j, long_j, False).rest - jump_op(T, j, long_j, True).rest)
+        self.code.indent -= 1
+        return first or iff
+
+    def _from_step(self, st, target, start, stop_t, step_t, step_ops, delta, lead) -> int:
+        """``x, again = spin.repeat_step(...); if not again: break`` of a general ``repeat x from``."""
         args = f"{target}, {start}, {stop_t}" + (f", {step_t}" if step_t else "")
         again = self.temp("again")
         ln = self.emit(f"{target}, {again} = spin.repeat_step({args})", st)
-        self.charge(ln, "b", step_ops)
+        self.charge(ln, "b", list(lead) + step_ops)
         self.emit(f"if not {again}:", st)
         self.code.indent += 1
         brk = self.emit("break", st)
         self.charge_add(brk, "b", delta)
-        self.code.indent -= 2
-        return first, line
+        self.code.indent -= 1
+        return ln
 
     def _step_code(self, st) -> None:
         mc = self.mc

@@ -288,9 +288,12 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
 
     def s_Next(self, st) -> tuple:
         loop = self.loop_of(st, "next")
-        if loop.kind in ("post", "general"):
-            self.unsupported("'next' in this kind of repeat loop", st)
         ops = self.case_pops(loop) + [jump_op(self.T, "JMP")] + loop.next_ops
+        if loop.emit_next is not None:          # Spin's next goes to the loop's test: write it here
+            first = loop.emit_next(ops)
+            line = self.emit("continue", st)
+            self.exits.add(line)
+            return first, line
         line = self.emit("continue", st)
         self.charge(line, "b", ops)
         self.exits.add(line)
