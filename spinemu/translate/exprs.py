@@ -319,7 +319,7 @@ class ExprTranslator:
 
     # ------------------------------------------------------------------ side effects
     def x_Assign(self, node) -> X:
-        if not self.narrow(node.target):
+        if not self.narrow(node.target) and not isinstance(node.target, A.RegRef):
             self.assign(node)
             return self.reread(node.target)
         # a byte/word/bit-field target keeps the low bits, but the expression's value is the whole result
@@ -336,10 +336,13 @@ class ExprTranslator:
         return self.pre_op(node)
 
     def pre_op(self, node) -> X:
-        if node.op in ("~", "~~", "?") and self.narrow(node.target):
-            fn = {"~": "sign_extend_byte", "~~": "sign_extend_word", "?": "random_forward"}[node.op]
+        if (node.op in ("~", "~~", "?") and self.narrow(node.target)) or isinstance(node.target, A.RegRef):
+            # the value is what was computed (a register such as CNT does not keep what is written)
+            old = self.expr(node.target).text
+            new = {"~": f"spin.sign_extend_byte({old})", "~~": f"spin.sign_extend_word({old})",
+                   "?": f"spin.random_forward({old})", "++": f"wrap({old} + 1)", "--": f"wrap({old} - 1)"}[node.op]
             tmp = self.temp("value")
-            self.hoisted.append(f"{tmp} = spin.{fn}({self.expr(node.target).text})")
+            self.hoisted.append(f"{tmp} = {new}")
             self.store(node.target, X(tmp), len(self.hoisted))
             return X(tmp)
         self.step(node.target, node.op)
@@ -358,7 +361,7 @@ class ExprTranslator:
 
     def x_PostOp(self, node) -> X:
         if node.op == "?":          # x? leaves the new value, like ?x (Propeller Manual, "Random")
-            if self.narrow(node.target):
+            if self.narrow(node.target) or isinstance(node.target, A.RegRef):
                 tmp = self.temp("value")
                 self.hoisted.append(f"{tmp} = spin.random_reverse({self.expr(node.target).text})")
                 self.store(node.target, X(tmp), len(self.hoisted))
