@@ -191,6 +191,8 @@ def _kind(data, i, op) -> str:
         if not data[i + 1] & 0x10:
             return ""               # $1E0-$1EF: the interpreter's own registers (COGID, the stack pointer)
         access = (data[i + 1] >> 5) & 3
+        if access == 2 and data[i + 1] & 0x1F in (0x11, 0x12, 0x13, 0x1C, 0x1D):
+            return "read"           # cnt?, ina++, phsa += x: what matters is when the value is read
         return "read" if access == 0 else "write"
     if op == 0x24:
         return "read"
