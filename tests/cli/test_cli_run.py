@@ -147,3 +147,21 @@ def test_compile_with_defines_matches_openspin(tmp_path, defines, image):
     code, _, err = run("compile", data / "ifdef_fast.spin", *defines, "-o", target)
     assert code == 0, err
     assert target.read_bytes() == (data / image).read_bytes()
+
+
+def test_progress_is_reported_on_a_terminal(monkeypatch):
+    """A long run shows progress on a terminal; the callback must reach the display."""
+    import spinemu.cli as cli
+
+    class TTY(io.StringIO):
+        def isatty(self):
+            return True
+
+    out = cli._Out(io.StringIO(), TTY())
+    progress, update = cli._progress_callback(out, None, 80_000_000, True)
+    assert progress is not None
+    with progress:
+        monkeypatch.setattr(cli.time, "monotonic", lambda: 1e9)
+        update(40_000_000)
+    assert progress.tasks[0].fields["sim"] == "0.500 s simulated"
+    assert cli._progress_callback(cli._Out(io.StringIO(), io.StringIO()), None, 1, True) == (None, None)
