@@ -590,7 +590,7 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
         stderr.write(f"spinemu {args.command}: {e.message}\n")
         return 2
     except SpinError as e:
-        stderr.write(e.render() + "\n")
+        stderr.write(_render_error(e) + "\n")
         return e.exit_status
     except OSError as e:
         stderr.write(f"{getattr(e, 'filename', None) or 'spinemu'}: error: {e.strerror or e}\n")
@@ -598,6 +598,22 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
     except KeyboardInterrupt:
         stderr.write("interrupted\n")
         return 130
+
+
+def _render_error(err: SpinError) -> str:
+    """The error's diagnostics, with paths under the working directory shown relative to it."""
+    from dataclasses import replace
+
+    cwd = os.getcwd()
+
+    def short(path):
+        if path and os.path.isabs(path):
+            rel = os.path.relpath(path, cwd)
+            if not rel.startswith(".."):
+                return rel
+        return path
+
+    return "\n".join(replace(d, path=short(d.path)).render() for d in err.diagnostics)
 
 
 def entry_point() -> None:

@@ -165,3 +165,19 @@ def test_progress_is_reported_on_a_terminal(monkeypatch):
         update(40_000_000)
     assert progress.tasks[0].fields["sim"] == "0.500 s simulated"
     assert cli._progress_callback(cli._Out(io.StringIO(), io.StringIO()), None, 1, True) == (None, None)
+
+
+def test_an_unknown_symbol_in_a_child_object_is_shown_as_in_the_house_style(tmp_path, monkeypatch):
+    for name in ("stepper.spin", "stepper_demo.spin"):
+        (tmp_path / name).write_text((SRC / name).read_text())
+    child = tmp_path / "stepper.spin"
+    child.write_text(child.read_text().replace("if (numSteps-- > 0)", "if (numStep-- > 0)"))
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run("compile", "stepper_demo.spin")
+    assert code == 1
+    assert err.splitlines() == [
+        "stepper.spin:146:15: error: unknown symbol 'numStep'",
+        "          if (numStep-- > 0)                           ' any steps left?",
+        "              ^",
+    ]
+    assert not (tmp_path / "stepper_demo.binary").exists()
