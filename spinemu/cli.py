@@ -111,18 +111,18 @@ class _Out:
 
 
 # ----------------------------------------------------------------------------- compile
-def _compile(path: str, include_dirs):
+def _compile(path: str, include_dirs, defines=()):
     from .compiler import compile_file
 
     if not os.path.exists(path):
         raise SpinError("no such file", path=path)
-    return compile_file(path, include_dirs=list(include_dirs or ()))
+    return compile_file(path, include_dirs=list(include_dirs or ()), defines=list(defines or ()))
 
 
 def cmd_compile(args, out: _Out) -> int:
     if _kind(args.source) != "spin":
         raise UsageError(f"'{args.source}' is not a .spin source file")
-    prog = _compile(args.source, args.include)
+    prog = _compile(args.source, args.include, args.define)
     for w in prog.warnings:
         out.err_console.print(w.render() if hasattr(w, "render") else str(w), markup=False)
     target = args.output or os.path.splitext(args.source)[0] + ".binary"
@@ -141,34 +141,41 @@ def cmd_compile(args, out: _Out) -> int:
 
 
 # ----------------------------------------------------------------------------- run
-def _load_target(path: str, include_dirs):
+def _load_target(path: str, include_dirs, defines=()):
     """(image bytes, source_map or None) for a .spin/.binary/.eeprom target."""
     from .image import load_image
 
     if _kind(path) == "spin":
-        prog = _compile(path, include_dirs)
+        prog = _compile(path, include_dirs, defines)
         table = getattr(prog, "line_table", None)
         source_map = (lambda addr: table.get(addr)) if isinstance(table, dict) else table
         return prog.binary, source_map, prog
     return load_image(_read_bytes(path), path), None, None
 
 
-def _progress_callback(out: _Out, total: Optional[int], enabled: bool):
-    """A rich progress bar on a terminal for long runs; otherwise nothing."""
-    if not enabled or not total or not out.stderr.isatty():
+def _progress_callback(out: _Out, total: Optional[int], clock_hz: int, enabled: bool):
+    """A rich progress display on a terminal: a bar towards the cycle limit, or the
+    simulated time so far when the run goes until every cog stops."""
+    if not enabled or out.quiet or not out.stderr.isatty():
         return None, None
-    from rich.progress import BarColumn, Progress, TextColumn, TimeRemainingColumn
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 
-    progress = Progress(TextColumn("simulating"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
-                        TimeRemainingColumn(), console=out.err_console, transient=True)
-    task = progress.add_task("run", total=total)
+    if total:
+        columns = [TextColumn("simulating"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
+                   TimeRemainingColumn()]
+    else:
+        columns = [TextColumn("simulating until every cog stops:"), TextColumn("{task.fields[sim]}"),
+                   TimeElapsedColumn()]
+    progress = Progress(*columns, console=out.err_console, transient=True)
+    task = progress.add_task("run", total=total, sim="0.000 s")
     last = [time.monotonic()]
 
     def update(cycle: int) -> None:
         now = time.monotonic()
         if now - last[0] > 0.1:
             last[0] = now
-            progress.update(task, completed=min(cycle, total))
+            progress.update(task, completed=min(cycle, total) if total else cycle,
+                            sim=f"{cycle / clock_hz:.3f} s simulated")
 
     return progress, update
 
@@ -245,7 +252,7 @@ def cmd_run(args, out: _Out) -> int:
         return _run_pbasic(args, out)
     if args.timing or args.debug_in:
         raise UsageError("--timing and --debug-in apply to BASIC Stamp programs (.bs2) only")
-    image, source_map, prog = _load_target(args.target, args.include)
+    image, source_map, prog = _load_target(args.target, args.include, args.define)
     from .image import ImageHeader
 
     clock = ImageHeader.parse(image).clkfreq or CLOCK_DEFAULT
@@ -262,7 +269,7 @@ def cmd_run(args, out: _Out) -> int:
         from .chip import Chip
 
         chip = Chip(image, compat=args.compat, inputs=_spin_inputs(args, clock), source_map=source_map)
-        progress, update = _progress_callback(out, limit, not args.no_progress)
+        progress, update = _progress_callback(out, limit, clock, not args.no_progress)
         if progress is not None:
             with progress:
                 result = chip.run(max_cycles=limit, progress=update)
@@ -453,6 +460,8 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("-e", "--eeprom", metavar="OUT.eeprom", help="also (or only) write the 32 KB EEPROM image")
     c.add_argument("-L", "-I", dest="include", action="append", metavar="DIR",
                    help="add a folder to search for OBJ files (after the source's own folder)")
+    c.add_argument("-D", dest="define", action="append", metavar="NAME",
+                   help="define NAME for #ifdef in every file (as OpenSpin's -D)")
     c.add_argument("--listing", metavar="FILE", help="write a listing (bytecode with source lines)")
     c.add_argument("-q", "--quiet", action="store_true", help="print nothing but errors")
     c.set_defaults(func=cmd_compile)
@@ -471,6 +480,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="log: '<cycle> <dir> <out>' lines; vcd: for GTKWave/PulseView (default: by extension, else log)")
     r.add_argument("--dump-hub", metavar="FILE", help="write the 32 KB hub RAM at the end of the run")
     r.add_argument("-L", "-I", dest="include", action="append", metavar="DIR", help="OBJ search folder")
+    r.add_argument("-D", dest="define", action="append", metavar="NAME", help="define NAME for #ifdef")
     r.add_argument("--compat", choices=["chip", "spinsim"], default="chip",
                    help="chip: model the real chip (default); spinsim: reproduce the reference simulator's shortcuts")
     r.add_argument("--inputs", choices=["pulldown", "pullup"], default="pulldown",
@@ -580,7 +590,7 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
         stderr.write(f"spinemu {args.command}: {e.message}\n")
         return 2
     except SpinError as e:
-        stderr.write(e.render() + "\n")
+        stderr.write(_render_error(e) + "\n")
         return e.exit_status
     except OSError as e:
         stderr.write(f"{getattr(e, 'filename', None) or 'spinemu'}: error: {e.strerror or e}\n")
@@ -588,6 +598,22 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
     except KeyboardInterrupt:
         stderr.write("interrupted\n")
         return 130
+
+
+def _render_error(err: SpinError) -> str:
+    """The error's diagnostics, with paths under the working directory shown relative to it."""
+    from dataclasses import replace
+
+    cwd = os.getcwd()
+
+    def short(path):
+        if path and os.path.isabs(path):
+            rel = os.path.relpath(path, cwd)
+            if not rel.startswith(".."):
+                return rel
+        return path
+
+    return "\n".join(replace(d, path=short(d.path)).render() for d in err.diagnostics)
 
 
 def entry_point() -> None:

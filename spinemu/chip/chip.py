@@ -5,8 +5,10 @@
 cleared, the boot frame ``$FFF9FFFF, $FFF9FFFF`` is placed below ``dbase``,
 and cog 0 starts the ROM's Spin interpreter on the first method.  Time is one
 32-bit system counter (CNT) shared by all cogs; each cog keeps the cycle at
-which it starts its next bytecode, and the scheduler always advances the cog
-that is furthest behind, jumping over time in which every cog waits.
+which it starts its next bytecode, and the scheduler (:mod:`.scheduler`)
+always advances the cog whose next hub access comes first, jumping over time
+in which every cog waits.  Pins are in :mod:`.pins`, the interpreter in
+:mod:`.spin`.
 
 Two compatibility modes (``compat``):
 
@@ -20,7 +22,8 @@ Two compatibility modes (``compat``):
     starts 4 cycles after the COGINIT, lock 1 comes first, DIRA/OUTA survive a
     restart, undriven pins read 1, all cogs share one hub phase.
 
-Hot path: :meth:`Chip._run_spin` (the bytecode loop) and :meth:`Chip.run`.
+Hot paths are in :mod:`.scheduler` and :mod:`.spin`; this module is set-up,
+cog and lock management, and the run's result.
 """
 from __future__ import annotations
 
@@ -28,13 +31,14 @@ import time
 from dataclasses import dataclass, field
 from typing import Callable, Optional
 
-from ..diagnostics import EmulationError, ImageError
+from ..diagnostics import EmulationError
 from ..image import BOOT_FRAME, HUB_SIZE, ImageHeader, load_image
 from ..trace import PinTrace
-from .cog import PARKED, PIN_WAIT, RUNNING, STOPPED, IDLE_PASM, Cog
-from .control import CogStopped, Preempted, RebootRequested, Reschedule
-from .fastforward import INTERRUPTED, LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
+from .cog import PARKED, RUNNING, STOPPED, IDLE_PASM, Cog
+from .control import CogStopped, Reschedule
+from .pins import Pins
 from .registers import Registers
+from .scheduler import NEVER, Scheduler
 from .rom import INTERPRETER_ENTRY, build_rom
 from .spin import build_handlers
 from .timing import Timing, access_offsets, load_timing
@@ -46,12 +50,7 @@ COMPAT_MODES = ("chip", "spinsim")
 #: longs, one per hub window (16 clocks), plus the window of the COGINIT itself.
 COG_LOAD_CYCLES = 496 * 16 + 16
 _SPINSIM_START_CYCLES = -4          # spinsim: first instruction in the COGINIT's last cycle
-_NEVER = 1 << 62
-_WRAP = 1 << 32
-
-
-def _preempt_handler(c, op, t):
-    raise Preempted
+_NEVER = NEVER
 
 
 @dataclass
@@ -62,8 +61,10 @@ class RunResult:
         trace: every pin change (first entry: the state at cycle 0).
         hub: the 32 KB of hub RAM when the run ended.
         end_cycle: the cycle the run ended at.
-        reason: ``"all cogs stopped"``, ``"cycle limit"``, ``"reboot"`` or
-            ``"deadlock"`` (every cog waits on pins that can never change).
+        reason: ``"all cogs stopped"``, ``"cycle limit"``, ``"reboot"``,
+            ``"deadlock"`` (every cog waits on pins that can never change),
+            ``"stalled"`` (the cogs left spin in loops that can never end) or
+            ``"only PASM cogs left"`` (PASM is not emulated).
         cog_events: ``(cycle, cog, "start" | "stop", detail)``.
         warnings: things the emulation could not do faithfully.
         stats: bytecodes executed (total and per cog), wall time, ...
@@ -78,7 +79,7 @@ class RunResult:
     stats: dict = field(default_factory=dict)
 
 
-class Chip:
+class Chip(Pins, Scheduler):
     """A Propeller 1 running one image.
 
     Args:
@@ -93,8 +94,6 @@ class Chip:
     Raises:
         ImageError: if ``image`` is not a valid Propeller image.
 
-    >>> from spinemu.image import to_eeprom
-    >>> img = bytes.fromhex("00b4c4046f001000180020001000240032000000")
     """
 
     def __init__(self, image: bytes, *, compat: str = "chip", inputs=None,
@@ -156,38 +155,6 @@ class Chip:
         self.last_target = None     # the target value of the latest assignment operator
         self.now = 0
 
-    # ------------------------------------------------------------------ pins
-    def pin_state(self, t: int) -> tuple[int, int]:
-        """``(dir, out)`` over running cogs at cycle ``t`` (counter outputs included)."""
-        d = o = 0
-        counters = self.counters if self.counters_on else None
-        for c in self.cogs:
-            if c.state != STOPPED:
-                d |= c.dira
-                out = c.outa
-                if counters is not None:
-                    out |= counters.outputs(c, t)
-                o |= c.dira & out
-        return d, o
-
-    def ina(self, t: int) -> int:
-        """What INA reads at cycle ``t``: driven pins as driven, the rest from the input model."""
-        d, o = self.pin_state(t)
-        return o | (self.inputs.levels(t) & ~d & 0xFFFFFFFF)
-
-    def record_cog_pins(self, c: Cog, t: int) -> None:
-        """Add cog ``c``'s pin drive at cycle ``t`` to the pin record."""
-        out = c.outa
-        if self.counters_on:
-            out |= self.counters.outputs(c, t)
-        self._seq += 1
-        self.pin_events.append((t, self._seq, c.id, c.dira, out, c.state != STOPPED))
-
-    def note_pins(self, c: Cog, t: int) -> None:
-        """Cog ``c`` changed DIRA, OUTA or a counter at cycle ``t`` (the pins change then)."""
-        self.record_cog_pins(c, t)
-        if self._pin_waiters:
-            self._wake_pin_waiters(t)
 
     # ------------------------------------------------------------------ faults
     def fault(self, c: Cog, hub_addr: int, message: str) -> EmulationError:
@@ -318,26 +285,6 @@ class Chip:
         self._video_ready[c.id] = start + frame
         return start - tf + T.waitvid_after
 
-    # ------------------------------------------------------------------ pin waits
-    def wait_pins(self, c: Cog, mask: int, state: int, equal: bool, tf: int) -> int:
-        issue, after = self.timing.waitpin[equal]
-        t = tf + issue
-        if ((self.ina(t) & mask) == state) == equal:
-            return issue + after
-        c.pin_wait = (mask, state, equal, after)
-        c.state = PIN_WAIT
-        self._pin_waiters.append(c)
-        self._ext_seen = max(self._ext_seen, t)
-        raise Reschedule(_NEVER - tf)
-
-    def _wake_pin_waiters(self, t: int) -> None:
-        for c in list(self._pin_waiters):
-            mask, state, equal, after = c.pin_wait
-            if ((self.ina(t) & mask) == state) == equal:
-                self._pin_waiters.remove(c)
-                c.pin_wait = None
-                c.state = RUNNING
-                c.t = t + after
 
     # ------------------------------------------------------------------ RUN
     def run_helper(self, c: Cog, tf: int) -> int:
@@ -383,20 +330,6 @@ class Chip:
         return {"fast_forward": self.fast_forward, "busy_loops_learned": self._ff_loops,
                 "bytecodes_skipped": self._ff_skipped}
 
-    def step(self, cog: int = 0) -> int:
-        """Execute exactly one bytecode of cog ``cog`` (booting the chip first if needed).
-
-        For tests and debuggers: no other cog runs, no fast-forward.
-
-        Returns:
-            the cycles from the start of that bytecode to the start of the next.
-        """
-        if not self._booted:
-            self._boot()
-        c = self.cogs[cog]
-        t = c.t
-        self._run_spin(c, self._key(c) + 1)
-        return c.t - t
 
     def _boot(self) -> None:
         self._booted = True
@@ -411,314 +344,3 @@ class Chip:
         t_first = 0
         self.start_spin_cog(cog0, 0x0004, t_first, None)
         self.cog_events[-1] = (t_first, 0, "start", f"Spin method at ${cog0.pc:04X} (boot)")
-
-    def _schedule(self, limit: int, progress) -> str:
-        """Advance the cog furthest behind until every cog stopped or ``limit``. (Hot loop.)"""
-        cogs = self.cogs
-        inputs = self.inputs
-        next_report = 0
-        run = (self._run_spin_traced if self.recorder is not None
-               else self._run_with_fast_forward if self.fast_forward else self._run_spin)
-        while True:
-            # the running cog whose next bytecode reaches the hub first (lowest id on ties)
-            c = None
-            ck = 0
-            for k in cogs:
-                if k.state == RUNNING:
-                    key = self._key(k)
-                    if c is None or key < ck:
-                        c, ck = k, key
-            ext = self._next_external(limit) if self._pin_waiters else None
-            if ext is not None and (c is None or ext <= c.t):
-                self.now = self._ext_seen = ext         # an input edge or a counter edge
-                self._wake_pin_waiters(ext)
-                continue
-            if c is None:
-                if self._parked and not self._pin_waiters:
-                    if limit >= _NEVER:
-                        return "stalled"
-                    for p in list(self._parked):
-                        self._unpark(p, limit)
-                    continue
-                if self._pin_waiters:           # nothing can change the pins they wait on
-                    if limit < _NEVER:
-                        self.now = limit
-                        return "cycle limit"
-                    return "deadlock"
-                if any(k.state == IDLE_PASM for k in cogs):
-                    return "cycle limit" if limit < _NEVER else "deadlock"
-                return "all cogs stopped"
-            t = c.t
-            if ck >= limit:
-                self.now = limit
-                for p in list(self._parked):
-                    self._unpark(p, limit)
-                return "cycle limit"
-            until = limit
-            cid = c.id
-            for o in cogs:
-                if o.state == RUNNING and o is not c:
-                    key = self._key(o)
-                    bound = key + 1 if cid < o.id else key
-                    if bound < until:
-                        until = bound
-            if ext is not None and ext < until:
-                until = ext
-            self.now = t
-            try:
-                run(c, until)
-            except RebootRequested:
-                self.now = c.t
-                return "reboot"
-            if progress is not None and t >= next_report:
-                progress(t)
-                next_report = t + 10_000_000
-
-    def _key(self, c: Cog) -> int:
-        """When cog ``c``'s next bytecode touches shared state (see timing.access_offsets)."""
-        tf = c.t + 12
-        return tf + ((c.hub_phase - tf) & 15) + self.access_at[self.mem[c.pc]]
-
-    def _next_external(self, limit: int):
-        """The next input change or counter edge after the last one handled, if before ``limit``."""
-        t = self._ext_seen
-        nxt = self.inputs.next_change(t)
-        if self.counters_on:
-            ce = self.counters.next_edge(t)
-            if ce is not None and (nxt is None or ce < nxt):
-                nxt = ce
-        return nxt if nxt is not None and nxt < limit else None
-
-    def _run_with_fast_forward(self, c: Cog, until: int) -> None:
-        """Run ``c`` until ``until``, skipping iterations of a learned busy loop (see fastforward.py)."""
-        busy = c.busy
-        if busy is None:
-            if c.bytecodes - c.learn_mark > c.learn_after and until - c.t > LEARN_HORIZON:
-                self._learn(c, until)
-                if c.busy is None or c.state != RUNNING or c.pc != c.busy.head:
-                    self._run_spin(c, until)
-                    return
-                busy = c.busy
-            else:
-                self._run_spin(c, until)
-                return
-        if c.pc == busy.head:
-            if not busy.still_valid(self, c):
-                c.busy = None                   # learn again at once: often only a value changed
-                c.learn_after = 0
-                c.learn_mark = c.bytecodes
-                self._run_spin(c, until)
-                return
-            self._park(c)
-            return
-        self._run_spin_to(c, until, busy.head)
-        if c.pc != busy.head and c.bytecodes - c.learn_mark > LEARN_AFTER:
-            c.busy = None               # the program left that loop: look for the next one
-            c.learn_after = 0
-            c.learn_mark = c.bytecodes
-
-    # ------------------------------------------------------------------ parking busy loops
-    def _park(self, c: Cog) -> None:
-        """Take cog ``c`` out of the schedule: it repeats its learned loop until something it reads changes."""
-        c.state = PARKED
-        c.park_t0 = c.t
-        c.learn_mark = c.bytecodes
-        for shift, i, _ in c.busy.reads:
-            a = (i << shift) & 0xFFFF
-            self.watch[a >> 2] = 1
-        self._parked.append(c)
-
-    def _unpark(self, c: Cog, t_limit: int) -> None:
-        """Bring parked cog ``c`` to where it would be, running its loop, when bytecodes starting before ``t_limit`` are done."""
-        busy = c.busy
-        k = max(0, (t_limit - 1 - c.park_t0) // busy.period)
-        c.t = c.park_t0 + k * busy.period
-        c.bytecodes += k * busy.bytecodes
-        busy.skipped += k * busy.bytecodes
-        self._ff_skipped += k * busy.bytecodes
-        c.state = RUNNING
-        self._parked.remove(c)
-        self.watch[:] = bytes(len(self.watch))
-        for p in self._parked:
-            for shift, i, _ in p.busy.reads:
-                self.watch[((i << shift) & 0xFFFF) >> 2] = 1
-        if c.t < t_limit:
-            self._run_spin(c, t_limit)
-
-    def watch_hit(self, writer: Cog, hub_addr: int, t: int, op: int) -> None:
-        """``writer``'s bytecode ``op``, started at ``t``, is about to write a hub long a parked loop reads.
-
-        The parked cog is brought up to ``t`` first (it reads the old value, as
-        it would have), and the writer's run loop is preempted after this
-        bytecode, so that the scheduler interleaves the two cogs again.
-        """
-        woke = False
-        tf = t + 12
-        key = tf + ((writer.hub_phase - tf) & 15) + self.access_at[op]
-        for p in list(self._parked):
-            if any(((i << shift) & 0xFFFF) >> 2 == hub_addr >> 2 for shift, i, _ in p.busy.reads):
-                self._unpark(p, key + 1 if p.id < writer.id else key)
-                woke = True
-        if woke:
-            self._preempt = True
-            self.handlers[:] = [_preempt_handler] * 256
-
-    def _end_preemption(self) -> None:
-        self.handlers[:] = self._handlers
-        self._preempt = False
-
-    def _learn(self, c: Cog, until: int) -> None:
-        if self._tracking is None:
-            self._tracking = tracking_handlers(self, self.timing)
-        handlers, log = self._tracking
-        try:
-            loop = learn_busy_loop(self, c, handlers, log, until)
-        finally:
-            log.clear()
-        c.learn_mark = c.bytecodes
-        if loop is INTERRUPTED:
-            return                      # not a failure: try again at the next chance
-        if loop is None:
-            # wait until the failed attempt's cost is small against normal running
-            c.learn_after = max(LEARN_AFTER, 16 * self.learn_tracked)
-        else:
-            c.busy = loop
-            self._ff_loops += 1
-
-    def _run_spin_to(self, c: Cog, limit: int, stop_pc: int) -> None:
-        """:meth:`_run_spin`, but stop when the cog comes back to ``stop_pc`` (a loop head)."""
-        mem = self.mem
-        H = self.handlers
-        ACC = self.access_at
-        P = c.hub_phase
-        t = c.t
-        n = 0
-        tf = t
-        try:
-            while True:
-                pc = c.pc
-                op = mem[pc]
-                tf = t + 12
-                tf += (P - tf) & 15
-                if tf + ACC[op] >= limit:
-                    break
-                c.pc = pc + 1
-                t = tf + H[op](c, op, t)
-                n += 1
-                if c.pc == stop_pc:
-                    break
-        except Reschedule as e:
-            t = tf + e.rest
-            n += 1
-        except Preempted:
-            c.pc = pc
-            self._end_preemption()
-        except CogStopped:
-            c.bytecodes += n + 1
-            return
-        except RebootRequested:
-            c.bytecodes += n + 1
-            c.t = tf
-            raise
-        except IndexError:
-            raise self.fault(c, c.pc - 1, "stack or address out of hub range") from None
-        c.bytecodes += n
-        if c.state == RUNNING:
-            c.t = t
-
-    def _run_spin(self, c: Cog, limit: int) -> None:
-        """Run cog ``c``'s bytecodes while it starts them before ``limit``. (Hot loop.)
-
-        Hook for other engines: when ``c.engine`` is not a string but an
-        object, the scheduler hands the cog to ``c.engine.run(c, limit)``,
-        which must advance ``c.t`` (or stop the cog) the same way.  The
-        Spin->Python translation (spinemu.translate) runs its cogs this way.
-        """
-        if c.engine.__class__ is not str:
-            c.engine.run(c, limit)
-            return
-        mem = self.mem
-        H = self.handlers
-        ACC = self.access_at
-        P = c.hub_phase
-        t = c.t
-        n = 0
-        tf = t
-        try:
-            while True:
-                pc = c.pc
-                op = mem[pc]
-                tf = t + 12
-                tf += (P - tf) & 15
-                if tf + ACC[op] >= limit:       # another cog touches the hub first
-                    break
-                c.pc = pc + 1
-                t = tf + H[op](c, op, t)
-                n += 1
-        except Reschedule as e:
-            t = tf + e.rest
-            n += 1
-        except Preempted:
-            c.pc = pc
-            self._end_preemption()
-        except CogStopped:
-            c.bytecodes += n + 1
-            return
-        except RebootRequested:
-            c.bytecodes += n + 1
-            c.t = tf
-            raise
-        except IndexError:
-            raise self.fault(c, c.pc - 1, "stack or address out of hub range") from None
-        c.bytecodes += n
-        if c.state == RUNNING:
-            c.t = t
-
-    def _run_spin_traced(self, c: Cog, limit: int) -> None:
-        """The instrumented twin of :meth:`_run_spin`: runs one bytecode and records it."""
-        L, W = self.mem_longs, self.mem_words
-        if c.state == RUNNING and self._key(c) < limit:
-            pc, t, sp = c.pc, c.t, c.sp
-            before = tuple(L[((sp - 4 * k) & 0xFFFF) >> 2] for k in range(1, 5))
-            op = self.mem[pc]
-            if 0x30 <= op <= 0x33:                  # frames unwound, and is the result pushed
-                d, frames = c.dbase, 1
-                while op < 0x32 and not W[((d - 8) & 0xFFFF) >> 1] & 2 and frames < 64:
-                    d = W[((d - 4) & 0xFFFF) >> 1]
-                    frames += 1
-                before = before + (frames, not W[((d - 8) & 0xFFFF) >> 1] & 1)
-            elif op == 0x17:                        # characters STRCOMP will compare
-                a, b, n = before[1] & 0xFFFF, before[0] & 0xFFFF, 0
-                while True:
-                    x, y = self.mem[(a + n) & 0xFFFF], self.mem[(b + n) & 0xFFFF]
-                    n += 1
-                    if x != y or x == 0:
-                        break
-                before = before + (n,)
-            self.last_target = None
-            self._run_spin(c, self._key(c) + 1)
-            sp = c.sp
-            after = tuple(L[((sp - 4 * k) & 0xFFFF) >> 2] for k in range(1, 3))
-            t_next = c.t if c.state == RUNNING else self.now
-            tf = t + 12
-            tf += (c.hub_phase - tf) & 15
-            self.recorder.append((c.id, pc, op, t, tf, t_next, before, after, self.last_target))
-
-    # ------------------------------------------------------------------ trace
-    def _build_trace(self, end: int) -> PinTrace:
-        trace = PinTrace(self.clock_hz, end_cycle=end)
-        trace.record(0, 0, 0)
-        state = {}
-        for t, _, cog_id, dira, outa, running in sorted(self.pin_events):
-            if t > end:
-                break
-            if running:
-                state[cog_id] = (dira, outa)
-            else:
-                state.pop(cog_id, None)
-            d = o = 0
-            for dd, oo in state.values():
-                d |= dd
-                o |= dd & oo
-            trace.record(t, d, o)
-        return trace

@@ -46,9 +46,6 @@ class _Counter:
     def __init__(self):
         self.ctr = self.frq = self.phs0 = self.t0 = self.flushed = self.mode = 0
 
-    def accumulating(self) -> bool:
-        return self.mode in _ACCUMULATING
-
     def phs(self, t: int) -> int:
         if self.mode in _ACCUMULATING:
             return (self.phs0 + self.frq * (t - self.t0)) & _M
@@ -138,10 +135,6 @@ class Counters:
         """Pins cog ``c``'s counters drive high at ``t`` (before DIRA gating)."""
         a, b = self.units[c.id]
         return (a.outputs(t) if a.mode in _OUTPUT_MODES else 0) | (b.outputs(t) if b.mode in _OUTPUT_MODES else 0)
-
-    def active(self, c) -> bool:
-        a, b = self.units[c.id]
-        return a.mode in _OUTPUT_MODES or b.mode in _OUTPUT_MODES
 
     def flush(self, c, t: int) -> None:
         """Record cog ``c``'s counter pin edges up to cycle ``t``."""

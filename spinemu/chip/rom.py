@@ -22,6 +22,7 @@ ROM code is reproduced.
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 
 __all__ = ["ROM_BASE", "INTERPRETER_ENTRY", "RETURN_TO_STOP", "build_rom"]
 
@@ -37,6 +38,7 @@ def _table(start: int, values) -> tuple[int, bytes]:
     return start, b"".join(v.to_bytes(2, "little") for v in values)
 
 
+@lru_cache(maxsize=1)
 def build_rom() -> bytes:
     """The 32 KB from $8000 to $FFFF.
 

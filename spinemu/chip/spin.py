@@ -24,15 +24,11 @@ jumps.  Everything else is written for clarity.
 from __future__ import annotations
 
 from ..bytecode import TABLE
-from .control import CogStopped, RebootRequested, Reschedule
+from .control import RebootRequested, Reschedule
 from .mathops import BINARY, MASK32, UNARY
-from .rom import INTERPRETER_ENTRY, RETURN_TO_STOP
 from .timing import Timing, math_param
 
 __all__ = ["build_handlers", "random_forward", "random_reverse"]
-
-_NEVER = 1 << 62
-
 
 def _parity(v: int) -> int:
     return bin(v).count("1") & 1
@@ -126,15 +122,6 @@ def build_handlers(chip, timing: Timing):
             return (v - 0x8000 if v & 0x4000 else v), True
         c.pc = pc + 1
         return (b - 0x80 if b & 0x40 else b), False
-
-    def offset_operand(c):
-        pc = c.pc
-        b = mem[pc]
-        if b & 0x80:
-            c.pc = pc + 2
-            return ((b & 0x7F) << 8) | mem[pc + 1], True
-        c.pc = pc + 1
-        return b, False
 
     # ------------------------------------------------------------------ registers
     regs = chip.registers   # register access: read(c, r, t), write(c, r, v, t)
@@ -577,9 +564,15 @@ def build_handlers(chip, timing: Timing):
             push(c, value)
         return T.returns(op, frames, not flags & 1)
 
-    def op_push_const(c, op, t):
-        push(c, (MASK32, 0, 1)[op - 0x34])
-        return T.push_const
+    def make_push_const(op):
+        value, rest = (MASK32, 0, 1)[op - 0x34], T.push_const
+
+        def op_push_const(c, op, t):
+            sp = c.sp
+            L[sp >> 2] = value
+            c.sp = sp + 4
+            return rest
+        return op_push_const
 
     def op_push_mask(c, op, t):
         b = mem[c.pc]
@@ -651,35 +644,57 @@ def build_handlers(chip, timing: Timing):
         raise chip.fault(c, c.pc - 1, f"unknown bytecode ${op:02X}")
 
     # ------------------------------------------------------------------ $40-$7F variables
-    def op_var_long(c, op, t):
-        a = ((c.dbase if op & 0x20 else c.vbase) + (op & 0x1C)) & 0xFFFF
+    def make_var_long(op):
+        """A handler for VAR/LOC long bytecode ``op`` with its fields resolved (hot path)."""
+        off = op & 0x1C
+        local = bool(op & 0x20)
         access = op & 3
+        rest = T.var[op]
         if access == 0:
-            sp = c.sp
-            L[sp >> 2] = L[a >> 2]
-            c.sp = sp + 4
+            if local:
+                def h(c, op, t):
+                    sp = c.sp
+                    L[sp >> 2] = L[((c.dbase + off) & 0xFFFF) >> 2]
+                    c.sp = sp + 4
+                    return rest
+            else:
+                def h(c, op, t):
+                    sp = c.sp
+                    L[sp >> 2] = L[((c.vbase + off) & 0xFFFF) >> 2]
+                    c.sp = sp + 4
+                    return rest
         elif access == 1:
-            sp = c.sp - 4
-            c.sp = sp
-            if a < 0x8000:
-                if WATCH[a >> 2]:
-                    chip.watch_hit(c, a, t, op)
-                L[a >> 2] = L[sp >> 2]
+            def h(c, op, t):
+                a = ((c.dbase if local else c.vbase) + off) & 0xFFFF
+                sp = c.sp - 4
+                c.sp = sp
+                if a < 0x8000:
+                    if WATCH[a >> 2]:
+                        chip.watch_hit(c, a, t, op)
+                    L[a >> 2] = L[sp >> 2]
+                return rest
         elif access == 3:
-            sp = c.sp
-            L[sp >> 2] = a
-            c.sp = sp + 4
+            def h(c, op, t):
+                sp = c.sp
+                L[sp >> 2] = ((c.dbase if local else c.vbase) + off) & 0xFFFF
+                c.sp = sp + 4
+                return rest
         else:
-            pc = c.pc
-            aop = mem[pc]
-            c.pc = pc + 1
-            new, rest = _assign(c, aop, L[a >> 2], MASK32, False)
-            if a < 0x8000:
-                if WATCH[a >> 2]:
-                    chip.watch_hit(c, a, t, op)
-                L[a >> 2] = new & MASK32
-            return T.var_using[op & 0x20 != 0] + rest
-        return T.var[op]
+            using_rest = T.var_using[local]
+
+            def h(c, op, t):
+                a = ((c.dbase if local else c.vbase) + off) & 0xFFFF
+                pc = c.pc
+                aop = mem[pc]
+                c.pc = pc + 1
+                new, arest = _assign(c, aop, L[a >> 2], MASK32, False)
+                if a < 0x8000:
+                    if WATCH[a >> 2]:
+                        chip.watch_hit(c, a, t, op)
+                    L[a >> 2] = new & MASK32
+                return using_rest + arest
+        h.__name__ = "op_var_long"
+        return h
 
     # ------------------------------------------------------------------ $80-$DF memory
     def make_mem(op):
@@ -825,11 +840,11 @@ def build_handlers(chip, timing: Timing):
         "op_lockset": op_lockset, "op_lockclr": op_lockset,
         "op_abort": op_return, "op_abort_value": op_return, "op_return": op_return,
         "op_return_value": op_return,
-        "op_push_neg1": op_push_const, "op_push_0": op_push_const, "op_push_1": op_push_const,
         "op_push_mask": op_push_mask, "op_push_imm1": op_push_imm, "op_push_imm2": op_push_imm,
         "op_push_imm3": op_push_imm, "op_push_imm4": op_push_imm,
         "op_reg_bit": op_reg, "op_reg_range": op_reg, "op_reg": op_reg,
-        "op_unknown": op_unknown, "op_var_long": op_var_long,
+        "op_unknown": op_unknown,
     }
-    makers = {"op_mem": make_mem, "op_math": make_math}
+    makers = {"op_mem": make_mem, "op_math": make_math, "op_var_long": make_var_long,
+              "op_push_neg1": make_push_const, "op_push_0": make_push_const, "op_push_1": make_push_const}
     return [makers[e.handler](e.code) if e.handler in makers else named[e.handler] for e in TABLE]

@@ -23,6 +23,7 @@ writes :mod:`spinemu.chip.timing_data`.
 """
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import Optional
 
 __all__ = ["Timing", "load_timing", "hub_align", "segments_rest", "math_param", "MATH_REF", "access_offsets"]
@@ -227,9 +228,14 @@ _LOOPS = ("strsize", "strcomp_eq", "strcomp_ne", "bytefill", "wordfill", "longfi
 def load_timing(data: Optional[dict] = None) -> Timing:
     """The measured timing (:mod:`spinemu.chip.timing_data`), or ``data`` if given."""
     if data is None:
-        from .timing_data import DATA
-        data = DATA
+        return _measured()
     return Timing(data)
+
+
+@lru_cache(maxsize=1)
+def _measured() -> Timing:
+    from .timing_data import DATA
+    return Timing(DATA)
 
 
 #: the parameter each value-dependent math bytecode's ROM loop depends on

@@ -171,22 +171,23 @@ def _sorted(errors: list) -> list:
     return out
 
 
-def compile_file(path: str, include_dirs=()) -> CompiledProgram:
+def compile_file(path: str, include_dirs=(), defines=()) -> CompiledProgram:
     """Compile a Spin program (top object ``path``) to a Propeller image.
 
     Args:
         path: the top object's .spin file.
         include_dirs: more folders to look for OBJ files in (after the source's folder).
+        defines: names defined for ``#ifdef`` in every file (OpenSpin's ``-D``).
 
     Raises:
         ParseError: syntax errors.
         CompileError: anything else wrong (unknown names, missing objects, ...).
     """
-    return _compile_unit(load_program(os.fspath(path), include_dirs))
+    return _compile_unit(load_program(os.fspath(path), include_dirs, defines=defines))
 
 
 def compile_source(text: str, name: str = "main.spin", include_dirs=(),
-                   files: Optional[dict] = None) -> CompiledProgram:
+                   files: Optional[dict] = None, defines=()) -> CompiledProgram:
     """Compile Spin source text (and optional extra files ``{name: text}`` for its OBJ lines).
 
     Diagnostics name the top file ``name``.  OBJ files are looked for among
@@ -197,4 +198,5 @@ def compile_source(text: str, name: str = "main.spin", include_dirs=(),
             with open(os.path.join(tmp, fname), "w", encoding="utf-8") as fh:
                 fh.write(body)
         source = SourceText(name, text)
-        return _compile_unit(load_program(os.path.join(tmp, os.path.basename(name)), include_dirs, source))
+        return _compile_unit(load_program(os.path.join(tmp, os.path.basename(name)), include_dirs, source,
+                                          defines=defines))

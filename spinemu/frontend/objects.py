@@ -63,8 +63,9 @@ def resolve_object_file(name: str, from_dir: str, include_dirs=()) -> Optional[s
 
 
 class _Loader:
-    def __init__(self, include_dirs):
+    def __init__(self, include_dirs, defines=()):
         self.include_dirs = list(include_dirs)
+        self.defines = tuple(defines)
         self.units: dict[str, ObjectUnit] = {}
         self.errors: list[Diagnostic] = []
         self.syntax_errors = 0
@@ -75,7 +76,7 @@ class _Loader:
         if real in self.units:
             return self.units[real]
         source = source or read_source(path)
-        spin, errors = parse_text(source)
+        spin, errors = parse_text(source, self.defines)
         self.errors.extend(errors)
         self.syntax_errors += len(errors)
         unit = ObjectUnit(path, spin)
@@ -222,7 +223,7 @@ def _report(errors, spin, node, text, reported) -> None:
     errors.append(Diagnostic(text, pos.path, pos.line, pos.col, spin.source.line(pos.line)))
 
 
-def load_program(path: str, include_dirs=(), source=None) -> ObjectUnit:
+def load_program(path: str, include_dirs=(), source=None, defines=()) -> ObjectUnit:
     """Load, parse and fold the constants of the object tree rooted at ``path``.
 
     Args:
@@ -233,7 +234,7 @@ def load_program(path: str, include_dirs=(), source=None) -> ObjectUnit:
         ParseError: syntax errors (of every file).
         CompileError: missing object files, bad or unknown constants.
     """
-    loader = _Loader(include_dirs)
+    loader = _Loader(include_dirs, defines)
     unit = loader.load(path, source)
     if loader.errors:
         cls = ParseError if loader.syntax_errors else CompileError

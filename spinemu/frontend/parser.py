@@ -107,9 +107,12 @@ def _failure(exc: ParseFailure, source: SourceText, start: str, tokens: list) ->
     return Diagnostic(text, source.path, tok.line, tok.col, source.line(tok.line), "error", length)
 
 
-def parse_text(source: SourceText) -> tuple[SpinFile, list]:
-    """Parse ``source``; returns the file and the list of error diagnostics (maybe empty)."""
-    text, pp_errors = preprocess(source.text)
+def parse_text(source: SourceText, defines=()) -> tuple[SpinFile, list]:
+    """Parse ``source``; returns the file and the list of error diagnostics (maybe empty).
+
+    ``defines`` are names taken as ``#define``d before the first line (OpenSpin's ``-D``).
+    """
+    text, pp_errors = preprocess(source.text, defines)
     lexed = tokenize(text, source.path, source.eof)
     errors: list[Diagnostic] = list(lexed.errors)
     for line, text_ in pp_errors:

@@ -172,3 +172,25 @@ def test_compat_and_inputs_are_checked():
         Chip(img, compat="p2")
     with pytest.raises(ValueError):
         Chip(img, inputs="floating")
+
+
+def test_reboot_ends_the_run():
+    result = Chip(image("reboot")).run()
+    assert result.reason == "reboot"
+    assert result.trace.changes[-1][1] == 1          # pin 0 driven, pin 1 never
+
+
+def test_waitvid_waits_one_frame_of_vscl_clocks_per_call():
+    img = image("waitvid")
+    t0, t1 = var_longs(img, Chip(img).run().hub, 2)
+    assert 3 * 1_000 <= t1 - t0 < 3 * 1_000 + 1_000
+
+
+def test_a_busy_loop_on_a_variable_another_cog_changes_is_parked_and_woken_exactly():
+    img = read_bytes(os.path.join(ROOT, "tests", "data", "chip", "programs", "cogs_share_variable.binary"))
+    for compat in ("chip", "spinsim"):
+        fast = Chip(img, compat=compat).run()
+        slow = Chip(img, compat=compat, fast_forward=False).run()
+        assert fast.stats["busy_loops_learned"] > 0 and fast.stats["bytecodes_skipped"] > 1000
+        assert (fast.trace.changes, fast.hub, fast.end_cycle) == (slow.trace.changes, slow.hub, slow.end_cycle)
+        assert fast.stats["bytecodes_per_cog"] == slow.stats["bytecodes_per_cog"]

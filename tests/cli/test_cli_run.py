@@ -138,3 +138,46 @@ def test_sidebyside_of_bs2_and_spin_forward_revolution(tmp_path):
     code, out, _ = run("sidebyside", b, s, "--left-pins", "4..7", "--right-pins", "1..4",
                        "--left-clock", "1000000", "--steps", "48")
     assert code == 0 and "coil patterns agree for all 48 compared steps" in out
+
+
+@pytest.mark.parametrize("defines,image", [([], "ifdef_fast.binary"), (["-D", "FAST"], "ifdef_fast_D_FAST.binary")])
+def test_compile_with_defines_matches_openspin(tmp_path, defines, image):
+    data = ROOT / "tests" / "data" / "compiler" / "defines"
+    target = tmp_path / "out.binary"
+    code, _, err = run("compile", data / "ifdef_fast.spin", *defines, "-o", target)
+    assert code == 0, err
+    assert target.read_bytes() == (data / image).read_bytes()
+
+
+def test_progress_is_reported_on_a_terminal(monkeypatch):
+    """A long run shows progress on a terminal; the callback must reach the display."""
+    import spinemu.cli as cli
+
+    class TTY(io.StringIO):
+        def isatty(self):
+            return True
+
+    out = cli._Out(io.StringIO(), TTY())
+    progress, update = cli._progress_callback(out, None, 80_000_000, True)
+    assert progress is not None
+    with progress:
+        monkeypatch.setattr(cli.time, "monotonic", lambda: 1e9)
+        update(40_000_000)
+    assert progress.tasks[0].fields["sim"] == "0.500 s simulated"
+    assert cli._progress_callback(cli._Out(io.StringIO(), io.StringIO()), None, 1, True) == (None, None)
+
+
+def test_an_unknown_symbol_in_a_child_object_is_shown_as_in_the_house_style(tmp_path, monkeypatch):
+    for name in ("stepper.spin", "stepper_demo.spin"):
+        (tmp_path / name).write_text((SRC / name).read_text())
+    child = tmp_path / "stepper.spin"
+    child.write_text(child.read_text().replace("if (numSteps-- > 0)", "if (numStep-- > 0)"))
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run("compile", "stepper_demo.spin")
+    assert code == 1
+    assert err.splitlines() == [
+        "stepper.spin:146:15: error: unknown symbol 'numStep'",
+        "          if (numStep-- > 0)                           ' any steps left?",
+        "              ^",
+    ]
+    assert not (tmp_path / "stepper_demo.binary").exists()

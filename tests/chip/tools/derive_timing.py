@@ -41,7 +41,6 @@ sys.path.insert(0, HERE)
 from spinemu.bytecode import instruction_length  # noqa: E402
 from spinemu.chip import Chip  # noqa: E402
 from spinemu.chip.rom import build_rom  # noqa: E402
-from spinemu.chip.timing import load_timing  # noqa: E402
 import spinsim_log  # noqa: E402
 
 ROM = build_rom()

@@ -1,0 +1,337 @@
+"""Time on the chip: which cog runs next, the bytecode loops, and fast-forward parking.
+
+:class:`Scheduler` is a mixin of :class:`spinemu.chip.chip.Chip`.  The cog
+whose next bytecode touches shared state first runs (``_key``: the fetch plus
+:func:`spinemu.chip.timing.access_offsets`), until another cog's next access
+comes earlier.  A cog in WAITCNT simply has its next bytecode far in the
+future; a stopped or pin-waiting cog is skipped; a parked busy loop
+(:mod:`spinemu.chip.fastforward`) costs nothing until a write it would read.
+
+Hot paths: :meth:`Scheduler._schedule` and :meth:`Scheduler._run_spin` (the
+bytecode loop: one list-indexed handler per bytecode, no flag checks; a rare
+event leaves it by exception, see :mod:`spinemu.chip.control`).
+"""
+from __future__ import annotations
+
+from .cog import PARKED, RUNNING, IDLE_PASM, Cog
+from .control import CogStopped, Preempted, RebootRequested, Reschedule
+from .fastforward import INTERRUPTED, LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
+
+__all__ = ["Scheduler", "NEVER"]
+
+NEVER = 1 << 62
+_NEVER = NEVER
+
+
+def _preempt_handler(c, op, t):
+    raise Preempted
+
+
+class Scheduler:
+    """Scheduling and the run loops of a :class:`~spinemu.chip.chip.Chip` (mixin)."""
+
+    def step(self, cog: int = 0) -> int:
+        """Execute exactly one bytecode of cog ``cog`` (booting the chip first if needed).
+
+        For tests and debuggers: no other cog runs, no fast-forward.
+
+        Returns:
+            the cycles from the start of that bytecode to the start of the next.
+        """
+        if not self._booted:
+            self._boot()
+        c = self.cogs[cog]
+        t = c.t
+        self._run_spin(c, self._key(c) + 1)
+        return c.t - t
+
+    def _schedule(self, limit: int, progress) -> str:
+        """Advance the cog furthest behind until every cog stopped or ``limit``. (Hot loop.)"""
+        cogs = self.cogs
+        mem, acc = self.mem, self.access_at
+        next_report = 0
+        run = (self._run_spin_traced if self.recorder is not None
+               else self._run_with_fast_forward if self.fast_forward else self._run_spin)
+        while True:
+            # the running cog whose next bytecode reaches the hub first (lowest id on ties)
+            c = None
+            ck = 0
+            for k in cogs:
+                if k.state == RUNNING:
+                    key = k.t + 12
+                    key += ((k.hub_phase - key) & 15) + acc[mem[k.pc]]
+                    if c is None or key < ck:
+                        c, ck = k, key
+            ext = self._next_external(limit) if self._pin_waiters else None
+            if ext is not None and (c is None or ext <= c.t):
+                self.now = self._ext_seen = ext         # an input edge or a counter edge
+                self._wake_pin_waiters(ext)
+                continue
+            if c is None:
+                if self._parked and not self._pin_waiters:
+                    if limit >= _NEVER:
+                        return "stalled"
+                    for p in list(self._parked):
+                        self._unpark(p, limit)
+                    continue
+                if self._pin_waiters:           # nothing can change the pins they wait on
+                    if limit < _NEVER:
+                        self.now = limit
+                        return "cycle limit"
+                    return "deadlock"
+                if any(k.state == IDLE_PASM for k in cogs):
+                    if limit < _NEVER:
+                        self.now = limit
+                        return "cycle limit"
+                    return "only PASM cogs left"
+                return "all cogs stopped"
+            t = c.t
+            if ck >= limit:
+                self.now = limit
+                for p in list(self._parked):
+                    self._unpark(p, limit)
+                return "cycle limit"
+            until = limit
+            cid = c.id
+            for o in cogs:
+                if o.state == RUNNING and o is not c:
+                    key = o.t + 12
+                    key += ((o.hub_phase - key) & 15) + acc[mem[o.pc]]
+                    bound = key + 1 if cid < o.id else key
+                    if bound < until:
+                        until = bound
+            if ext is not None and ext < until:
+                until = ext
+            self.now = t
+            try:
+                run(c, until)
+            except RebootRequested:
+                self.now = c.t
+                return "reboot"
+            if progress is not None and t >= next_report:
+                progress(t)
+                next_report = t + 10_000_000
+
+    def _key(self, c: Cog) -> int:
+        """When cog ``c``'s next bytecode touches shared state (see timing.access_offsets)."""
+        tf = c.t + 12
+        return tf + ((c.hub_phase - tf) & 15) + self.access_at[self.mem[c.pc]]
+
+    def _next_external(self, limit: int):
+        """The next input change or counter edge after the last one handled, if before ``limit``."""
+        t = self._ext_seen
+        nxt = self.inputs.next_change(t)
+        if self.counters_on:
+            ce = self.counters.next_edge(t)
+            if ce is not None and (nxt is None or ce < nxt):
+                nxt = ce
+        return nxt if nxt is not None and nxt < limit else None
+
+    def _run_with_fast_forward(self, c: Cog, until: int) -> None:
+        """Run ``c`` until ``until``, skipping iterations of a learned busy loop (see fastforward.py)."""
+        busy = c.busy
+        if busy is None:
+            if c.bytecodes - c.learn_mark > c.learn_after and until - c.t > LEARN_HORIZON:
+                self._learn(c, until)
+                if c.busy is None or c.state != RUNNING or c.pc != c.busy.head:
+                    self._run_spin(c, until)
+                    return
+                busy = c.busy
+            else:
+                self._run_spin(c, until)
+                return
+        if c.pc == busy.head:
+            if not busy.still_valid(self, c):
+                c.busy = None                   # learn again at once: often only a value changed
+                c.learn_after = 0
+                c.learn_mark = c.bytecodes
+                self._run_spin(c, until)
+                return
+            self._park(c)
+            return
+        self._run_spin_to(c, until, busy.head)
+        if c.pc != busy.head and c.bytecodes - c.learn_mark > LEARN_AFTER:
+            c.busy = None               # the program left that loop: look for the next one
+            c.learn_after = 0
+            c.learn_mark = c.bytecodes
+
+    def _park(self, c: Cog) -> None:
+        """Take cog ``c`` out of the schedule: it repeats its learned loop until something it reads changes."""
+        c.state = PARKED
+        c.park_t0 = c.t
+        c.learn_mark = c.bytecodes
+        for shift, i, _ in c.busy.reads:
+            a = (i << shift) & 0xFFFF
+            self.watch[a >> 2] = 1
+        self._parked.append(c)
+
+    def _unpark(self, c: Cog, t_limit: int) -> None:
+        """Bring parked cog ``c`` to where it would be, running its loop, when bytecodes starting before ``t_limit`` are done."""
+        busy = c.busy
+        k = max(0, (t_limit - 1 - c.park_t0) // busy.period)
+        c.t = c.park_t0 + k * busy.period
+        c.bytecodes += k * busy.bytecodes
+        busy.skipped += k * busy.bytecodes
+        self._ff_skipped += k * busy.bytecodes
+        c.state = RUNNING
+        self._parked.remove(c)
+        self.watch[:] = bytes(len(self.watch))
+        for p in self._parked:
+            for shift, i, _ in p.busy.reads:
+                self.watch[((i << shift) & 0xFFFF) >> 2] = 1
+        if c.t < t_limit:
+            self._run_spin(c, t_limit)
+
+    def watch_hit(self, writer: Cog, hub_addr: int, t: int, op: int) -> None:
+        """``writer``'s bytecode ``op``, started at ``t``, is about to write a hub long a parked loop reads.
+
+        The parked cog is brought up to ``t`` first (it reads the old value, as
+        it would have), and the writer's run loop is preempted after this
+        bytecode, so that the scheduler interleaves the two cogs again.
+        """
+        woke = False
+        tf = t + 12
+        key = tf + ((writer.hub_phase - tf) & 15) + self.access_at[op]
+        for p in list(self._parked):
+            if any(((i << shift) & 0xFFFF) >> 2 == hub_addr >> 2 for shift, i, _ in p.busy.reads):
+                self._unpark(p, key + 1 if p.id < writer.id else key)
+                woke = True
+        if woke:
+            self._request_preemption()
+
+    def _request_preemption(self) -> None:
+        """End the running cog's loop after its current bytecode (see control.Preempted)."""
+        self._preempt = True
+        self.handlers[:] = [_preempt_handler] * 256
+
+    def _end_preemption(self) -> None:
+        self.handlers[:] = self._handlers
+        self._preempt = False
+
+    def _learn(self, c: Cog, until: int) -> None:
+        if self._tracking is None:
+            self._tracking = tracking_handlers(self, self.timing)
+        handlers, log = self._tracking
+        try:
+            loop = learn_busy_loop(self, c, handlers, log, until)
+        finally:
+            log.clear()
+        c.learn_mark = c.bytecodes
+        if loop is INTERRUPTED:
+            return                      # not a failure: try again at the next chance
+        if loop is None:
+            # wait until the failed attempt's cost is small against normal running
+            c.learn_after = max(LEARN_AFTER, 16 * self.learn_tracked)
+        else:
+            c.busy = loop
+            self._ff_loops += 1
+
+    def _run_spin_to(self, c: Cog, limit: int, stop_pc: int) -> None:
+        """:meth:`_run_spin`, but stop when the cog comes back to ``stop_pc`` (a loop head)."""
+        mem = self.mem
+        H = self.handlers
+        ACC = self.access_at
+        P = c.hub_phase
+        t = c.t
+        n = 0
+        tf = t
+        try:
+            while True:
+                pc = c.pc
+                op = mem[pc]
+                tf = t + 12
+                tf += (P - tf) & 15
+                if tf + ACC[op] >= limit:
+                    break
+                c.pc = pc + 1
+                t = tf + H[op](c, op, t)
+                n += 1
+                if c.pc == stop_pc:
+                    break
+        except Reschedule as e:
+            t = tf + e.rest
+            n += 1
+        except Preempted:
+            c.pc = pc
+            self._end_preemption()
+        except CogStopped:
+            c.bytecodes += n + 1
+            return
+        except RebootRequested:
+            c.bytecodes += n + 1
+            c.t = tf
+            raise
+        except IndexError:
+            raise self.fault(c, c.pc - 1, "stack or address out of hub range") from None
+        c.bytecodes += n
+        if c.state == RUNNING:
+            c.t = t
+
+    def _run_spin(self, c: Cog, limit: int) -> None:
+        """Run cog ``c``'s bytecodes while it starts them before ``limit``. (Hot loop.)"""
+        mem = self.mem
+        H = self.handlers
+        ACC = self.access_at
+        P = c.hub_phase
+        t = c.t
+        n = 0
+        tf = t
+        try:
+            while True:
+                pc = c.pc
+                op = mem[pc]
+                tf = t + 12
+                tf += (P - tf) & 15
+                if tf + ACC[op] >= limit:       # another cog touches the hub first
+                    break
+                c.pc = pc + 1
+                t = tf + H[op](c, op, t)
+                n += 1
+        except Reschedule as e:
+            t = tf + e.rest
+            n += 1
+        except Preempted:
+            c.pc = pc
+            self._end_preemption()
+        except CogStopped:
+            c.bytecodes += n + 1
+            return
+        except RebootRequested:
+            c.bytecodes += n + 1
+            c.t = tf
+            raise
+        except IndexError:
+            raise self.fault(c, c.pc - 1, "stack or address out of hub range") from None
+        c.bytecodes += n
+        if c.state == RUNNING:
+            c.t = t
+
+    def _run_spin_traced(self, c: Cog, limit: int) -> None:
+        """The instrumented twin of :meth:`_run_spin`: runs one bytecode and records it."""
+        L, W = self.mem_longs, self.mem_words
+        if c.state == RUNNING and self._key(c) < limit:
+            pc, t, sp = c.pc, c.t, c.sp
+            before = tuple(L[((sp - 4 * k) & 0xFFFF) >> 2] for k in range(1, 5))
+            op = self.mem[pc]
+            if 0x30 <= op <= 0x33:                  # frames unwound, and is the result pushed
+                d, frames = c.dbase, 1
+                while op < 0x32 and not W[((d - 8) & 0xFFFF) >> 1] & 2 and frames < 64:
+                    d = W[((d - 4) & 0xFFFF) >> 1]
+                    frames += 1
+                before = before + (frames, not W[((d - 8) & 0xFFFF) >> 1] & 1)
+            elif op == 0x17:                        # characters STRCOMP will compare
+                a, b, n = before[1] & 0xFFFF, before[0] & 0xFFFF, 0
+                while True:
+                    x, y = self.mem[(a + n) & 0xFFFF], self.mem[(b + n) & 0xFFFF]
+                    n += 1
+                    if x != y or x == 0:
+                        break
+                before = before + (n,)
+            self.last_target = None
+            self._run_spin(c, self._key(c) + 1)
+            sp = c.sp
+            after = tuple(L[((sp - 4 * k) & 0xFFFF) >> 2] for k in range(1, 3))
+            t_next = c.t if c.state == RUNNING else self.now
+            tf = t + 12
+            tf += (c.hub_phase - tf) & 15
+            self.recorder.append((c.id, pc, op, t, tf, t_next, before, after, self.last_target))

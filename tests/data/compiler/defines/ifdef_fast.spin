@@ -1,0 +1,6 @@
+PUB main
+#ifdef FAST
+  outa[1] := 1
+#else
+  outa[2] := 1
+#endif
