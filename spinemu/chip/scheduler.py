@@ -60,6 +60,8 @@ class Scheduler:
                 if k.state == RUNNING:
                     key = k.t + 12
                     key += ((k.hub_phase - key) & 15) + acc[mem[k.pc]]
+                    if k.engine.__class__ is not str:     # another engine (spinemu.translate) knows its key
+                        key = k.engine.key(k)
                     if c is None or key < ck:
                         c, ck = k, key
             ext = self._next_external(limit) if self._pin_waiters else None
@@ -97,6 +99,8 @@ class Scheduler:
                 if o.state == RUNNING and o is not c:
                     key = o.t + 12
                     key += ((o.hub_phase - key) & 15) + acc[mem[o.pc]]
+                    if o.engine.__class__ is not str:
+                        key = o.engine.key(o)
                     bound = key + 1 if cid < o.id else key
                     if bound < until:
                         until = bound
@@ -113,7 +117,15 @@ class Scheduler:
                 next_report = t + 10_000_000
 
     def _key(self, c: Cog) -> int:
-        """When cog ``c``'s next bytecode touches shared state (see timing.access_offsets)."""
+        """When cog ``c``'s next bytecode touches shared state (see timing.access_offsets).
+
+        Engine hook: a cog whose ``engine`` is an object (not ``"spin"``/``"pasm"``)
+        is run by ``engine.run(cog, limit)`` (through ``_run_spin`` in its chip
+        subclass) and reports this moment itself, ``engine.key(cog)``; the
+        scheduler above asks it.  spinemu.translate's Python engine uses this.
+        """
+        if c.engine.__class__ is not str:
+            return c.engine.key(c)
         tf = c.t + 12
         return tf + ((c.hub_phase - tf) & 15) + self.access_at[self.mem[c.pc]]
 
