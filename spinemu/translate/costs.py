@@ -183,7 +183,7 @@ def access_range(ops):
 def _kind(data, i, op) -> str:
     if op in (0x05, 0x06, 0x07):
         return "call"
-    if op in (0x1B, 0x1F, 0x23):
+    if op in (0x1B, 0x1F, 0x23, 0x27):
         return "wait"
     if op in (0x20, 0x21, 0x28, 0x2C):        # CLKSET, COGSTOP, COGINIT
         return "cog"

@@ -114,6 +114,8 @@ class Engine:
         RT.limit = limit
         RT.engine = self
         RT.keys[c.id] = None
+        if self.chip._preempt:              # a preemption meant for a bytecode cog's loop
+            self.chip._end_preemption()
         self.scheduler = greenlet.getcurrent()
         self.greenlets[c.id].switch()
 
@@ -165,6 +167,11 @@ class Engine:
         issue = tf + T.waitcnt_issue
         wait = (target - issue - T.waitcnt_min) & 0xFFFFFFFF
         c.t = tf + T.waitcnt_issue + T.waitcnt_min + wait + T.waitcnt_after
+
+    def waitvid(self, colors: int, pixels: int) -> None:
+        c = RT.cog
+        tf = spin._fetched()
+        c.t = tf + self.chip.waitvid(c, colors & 0xFFFFFFFF, pixels & 0xFFFFFFFF, tf)
 
     def wait_pins(self, state: int, mask: int, equal: bool) -> None:
         c = RT.cog
@@ -325,10 +332,14 @@ class PythonChip(Chip):
         self.cog_events[-1] = (when, cog_id, kind, detail.replace("Spin method", f"Python {name}", 1))
         self.engine.attach(c, method, args)
 
-    def _key(self, c) -> int:
+    # Where the chip's scheduler hands a cog over (spinemu.chip.scheduler; it asks engine.key(c) itself):
+    def _run_spin(self, c, limit: int) -> None:
+        """Run cog ``c`` until ``limit``: translated cogs by the Python engine."""
         if c.engine is self.engine:
-            return self.engine.key(c)
-        return super()._key(c)
+            self.engine.run(c, limit)
+        else:
+            super()._run_spin(c, limit)
+
 
 
 def _first_method(obj):

@@ -535,7 +535,7 @@ def trap(method, *args, keep_result: bool = True) -> int:
 from .spin_cog import (  # noqa: E402,F401 - the cog's half of this namespace
     Register, bytefill, bytemove, clkfreq, clkmode, clkset, cog, cogid, coginit, cognew, cogstop,
     lockclr, locknew, lockret, lockset, longfill, longmove, reboot, strcomp, string, strsize,
-    waitcnt, waitpeq, waitpne, wordfill, wordmove, _fetched,
+    waitcnt, waitpeq, waitpne, waitvid, wordfill, wordmove, _fetched,
 )
 
 

@@ -15,7 +15,7 @@ from ..chip.spin import _reverse_bits as _reverse
 from .spin import M32, RT, byte, flag, long, word, wrap
 
 __all__ = [
-    "Register", "cog", "cogid", "clkfreq", "clkmode", "waitcnt", "waitpeq", "waitpne", "cognew",
+    "Register", "cog", "cogid", "clkfreq", "clkmode", "waitcnt", "waitpeq", "waitpne", "waitvid", "cognew",
     "coginit", "cogstop", "reboot", "clkset", "locknew", "lockret", "lockset", "lockclr", "strsize",
     "strcomp", "string", "bytefill", "wordfill", "longfill", "bytemove", "wordmove", "longmove",
 ]
@@ -47,7 +47,11 @@ def _read(reg: int, op: int) -> int:
 def _write(reg: int, value: int) -> None:
     # the statement already paid for the writing bytecode: its last instruction writes
     c = RT.cog
-    RT.chip.registers.write(c, reg, value & M32, c.t - 4)
+    chip = RT.chip
+    chip.registers.write(c, reg, value & M32, c.t - 4)
+    if chip._preempt:                   # the write woke a WAITPEQ/WAITPNE cog: let the scheduler see it
+        chip._end_preemption()
+        RT.limit = -1
 
 
 def _field(key):
@@ -158,6 +162,11 @@ def waitcnt(target: int) -> None:
 def waitpeq(state: int, mask: int, port: int = 0) -> None:
     """Wait until ``INA & mask == state``."""
     RT.engine.wait_pins(state, mask, True)
+
+
+def waitvid(colors: int, pixels: int) -> None:
+    """Wait for the cog's video generator to take the next frame (VSCL sets its length)."""
+    RT.engine.waitvid(colors, pixels)
 
 
 def waitpne(state: int, mask: int, port: int = 0) -> None:

@@ -410,8 +410,6 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         simple = ("waitcnt", "waitpeq", "waitpne", "cogstop", "lockret", "lockset", "lockclr", "strsize",
                   "strcomp", "bytefill", "wordfill", "longfill", "bytemove", "wordmove", "longmove",
                   "clkset", "waitvid")
-        if name == "waitvid":
-            self.unsupported("waitvid (video)", node)
         if name in simple:
             return X(f"spin.{name}({', '.join(self.value(a) for a in args)})")
         if name in ("locknew", "cogid", "clkfreq", "clkmode", "reboot"):

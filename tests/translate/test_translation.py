@@ -94,12 +94,12 @@ def test_translated_program_runs_from_the_written_package(tmp_path):
 
 
 def test_unsupported_constructs_name_the_construct_and_its_line(tmp_path):
-    src = tmp_path / "video.spin"
-    src.write_text("PUB main | x\n  x := 1\n  waitvid(x, 0)\n")
+    src = tmp_path / "cases.spin"
+    src.write_text("VAR\n  long y\nPUB main | x\n  case x\n    y++: x := 1\n")
     with pytest.raises(SpinError) as err:
         translate.translate_file(src, tmp_path / "out")
     text = str(err.value)
-    assert "video.spin:3:3: error: cannot translate waitvid" in text
+    assert "cases.spin:5:5: error: cannot translate a case value with side effects" in text
     assert not (tmp_path / "out").exists()
 
 
