@@ -1,22 +1,23 @@
 """The Python engine: translated Spin objects running on spinemu's chip model.
 
 * :class:`PythonChip` is a :class:`spinemu.chip.Chip` whose Spin cogs run
-  translated Python instead of bytecode.  The chip's scheduler hands such a
-  cog to :meth:`Engine.run` (the engine hook in ``Chip._run_spin``); the
-  engine switches into the cog's greenlet, which runs the translated method
-  as plain synchronous Python until the cog's time passes the limit the
-  scheduler gave it, or it waits.  So cogs stay in time order exactly as
-  bytecode cogs do: a cog runs ahead only until another runnable cog is
-  earlier.
+  translated Python instead of bytecode.  The chip boots and starts cogs
+  itself (``start_spin_cog``); the scheduler hands such a cog to
+  :meth:`Engine.run` (``PythonChip._run_spin``) and asks it when it next
+  touches shared state (:meth:`Engine.key`, the engine hook in
+  ``spinemu.chip.scheduler``).  The engine switches into the cog's greenlet,
+  which runs the translated method as plain synchronous Python until its
+  next shared access would pass another cog's, or it waits.  So cogs meet at
+  the hub in the same order as bytecode cogs do.
 * Time: the generated module carries a table ``SPIN_CYCLES`` (Python line ->
-  cycles).  :func:`prepare` weaves those charges into the class's methods
-  when the class is first run (:mod:`spinemu.translate.weave`), so the
-  readable source stays free of bookkeeping and each statement still costs
-  exactly what its bytecode costs.
-* :func:`instantiate` builds the object tree at the hub addresses of the
-  compiler's :class:`~spinemu.compiler.InstanceLayout`.
+  cycles).  :func:`spinemu.translate.weave.prepare` weaves those charges into
+  the class's methods when the class is first run, so the readable source
+  stays free of bookkeeping and each statement still costs exactly what its
+  bytecode costs.
+* :func:`instantiate` builds the object tree at the hub addresses the
+  image's object tables give.
 
-Hot path: :func:`tick` (called once or twice per statement).
+Hot path: :func:`tick` and :func:`tick_at` (called once or twice per statement).
 """
 from __future__ import annotations
 
