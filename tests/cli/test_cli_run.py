@@ -181,3 +181,33 @@ def test_an_unknown_symbol_in_a_child_object_is_shown_as_in_the_house_style(tmp_
         "              ^",
     ]
     assert not (tmp_path / "stepper_demo.binary").exists()
+
+
+def test_translate_writes_one_module_per_object(tmp_path):
+    code, out, err = run("translate", SRC / "stepper_demo.spin", "-o", tmp_path / "py")
+    assert code == 0, err
+    names = sorted(p.name for p in (tmp_path / "py").glob("*.py"))
+    assert names == ["__init__.py", "stepper.py", "stepper_demo.py"]
+    text = (tmp_path / "py" / "stepper.py").read_text()
+    assert "class Stepper(" in text and "def runStepper(self, m1):" in text and "# L146" in text
+
+
+def test_translate_side_by_side_shows_both_languages():
+    code, out, err = run("translate", "--side-by-side", SRC / "simple_stepper.spin")
+    assert code == 0, err
+    assert "stpDelay" in out and "def " in out
+
+
+def test_translate_needs_an_output_folder():
+    code, _, err = run("translate", SRC / "simple_stepper.spin")
+    assert code == 2 and "-o OUT_DIR" in err
+
+
+def test_python_engine_gives_the_bytecode_engines_trace(tmp_path):
+    a, b = tmp_path / "bytecode.log", tmp_path / "python.log"
+    src = SRC / "simple_stepper.spin"
+    assert run("run", src, "--seconds", "0.3", "--trace", a)[0] == 0
+    code, _, err = run("run", src, "--seconds", "0.3", "--engine", "python", "--trace", b)
+    assert code == 0, err
+    code, out, _ = run("trace", "compare", a, b)
+    assert code == 0 and "largest offset 0 cycles" in out
