@@ -13,6 +13,8 @@ The public API (see docs/api.md):
 * :class:`PinTrace`, :func:`read_log` - pin traces and their files.
 * :func:`compare_traces`, :func:`decode_steps`, :func:`compare_stepper_traces`,
   :func:`render_timeline`, :func:`plot_trace`, :func:`disassemble_image` - analysis.
+* :func:`translate_spin`, :func:`run_translated` - Spin to readable Python, and running it
+  on the same chip model.
 * :class:`SpinError` - every error about bad input.
 
 Everything but the error and trace types is imported on first use, so
@@ -31,7 +33,7 @@ __version__ = "0.1.0"
 __all__ = [
     "SpinError", "PinTrace", "read_log", "compile_spin", "Chip", "run_spin", "run_bs2",
     "compare_traces", "decode_steps", "compare_stepper_traces", "render_timeline", "plot_trace",
-    "disassemble_image", "__version__",
+    "disassemble_image", "translate_spin", "run_translated", "__version__",
 ]
 
 _LAZY = {
@@ -42,6 +44,8 @@ _LAZY = {
     "render_timeline": ("spinemu.analysis.view", "render_timeline"),
     "plot_trace": ("spinemu.analysis.plot", "plot_trace"),
     "disassemble_image": ("spinemu.analysis.disasm", "disassemble_image"),
+    "translate_spin": ("spinemu.translate", "translate_file"),
+    "run_translated": ("spinemu.translate", "run_translated"),
 }
 
 

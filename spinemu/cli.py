@@ -153,22 +153,29 @@ def _load_target(path: str, include_dirs, defines=()):
     return load_image(_read_bytes(path), path), None, None
 
 
-def _progress_callback(out: _Out, total: Optional[int], enabled: bool):
-    """A rich progress bar on a terminal for long runs; otherwise nothing."""
-    if not enabled or not total or not out.stderr.isatty():
+def _progress_callback(out: _Out, total: Optional[int], clock_hz: int, enabled: bool):
+    """A rich progress display on a terminal: a bar towards the cycle limit, or the
+    simulated time so far when the run goes until every cog stops."""
+    if not enabled or out.quiet or not out.stderr.isatty():
         return None, None
-    from rich.progress import BarColumn, Progress, TextColumn, TimeRemainingColumn
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 
-    progress = Progress(TextColumn("simulating"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
-                        TimeRemainingColumn(), console=out.err_console, transient=True)
-    task = progress.add_task("run", total=total)
+    if total:
+        columns = [TextColumn("simulating"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
+                   TimeRemainingColumn()]
+    else:
+        columns = [TextColumn("simulating until every cog stops:"), TextColumn("{task.fields[sim]}"),
+                   TimeElapsedColumn()]
+    progress = Progress(*columns, console=out.err_console, transient=True)
+    task = progress.add_task("run", total=total, sim="0.000 s")
     last = [time.monotonic()]
 
     def update(cycle: int) -> None:
         now = time.monotonic()
         if now - last[0] > 0.1:
             last[0] = now
-            progress.update(task, completed=min(cycle, total))
+            progress.update(task, completed=min(cycle, total) if total else cycle,
+                            sim=f"{cycle / clock_hz:.3f} s simulated")
 
     return progress, update
 
@@ -262,7 +269,7 @@ def cmd_run(args, out: _Out) -> int:
         from .chip import Chip
 
         chip = Chip(image, compat=args.compat, inputs=_spin_inputs(args, clock), source_map=source_map)
-        progress, update = _progress_callback(out, limit, not args.no_progress)
+        progress, update = _progress_callback(out, limit, clock, not args.no_progress)
         if progress is not None:
             with progress:
                 result = chip.run(max_cycles=limit, progress=update)
@@ -583,7 +590,7 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
         stderr.write(f"spinemu {args.command}: {e.message}\n")
         return 2
     except SpinError as e:
-        stderr.write(e.render() + "\n")
+        stderr.write(_render_error(e) + "\n")
         return e.exit_status
     except OSError as e:
         stderr.write(f"{getattr(e, 'filename', None) or 'spinemu'}: error: {e.strerror or e}\n")
@@ -591,6 +598,22 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
     except KeyboardInterrupt:
         stderr.write("interrupted\n")
         return 130
+
+
+def _render_error(err: SpinError) -> str:
+    """The error's diagnostics, with paths under the working directory shown relative to it."""
+    from dataclasses import replace
+
+    cwd = os.getcwd()
+
+    def short(path):
+        if path and os.path.isabs(path):
+            rel = os.path.relpath(path, cwd)
+            if not rel.startswith(".."):
+                return rel
+        return path
+
+    return "\n".join(replace(d, path=short(d.path)).render() for d in err.diagnostics)
 
 
 def entry_point() -> None:

@@ -143,7 +143,14 @@ class Scheduler:
                 next_report = t + 10_000_000
 
     def _key(self, c: Cog) -> int:
-        """When cog ``c``'s next bytecode touches shared state (see timing.access_offsets)."""
+        """When cog ``c``'s next bytecode touches shared state (see timing.access_offsets).
+
+        Engine hook: a cog whose ``engine`` is an object (not ``"spin"``/``"pasm"``)
+        is run by ``engine.run(cog, limit)`` and reports this moment itself,
+        ``engine.key(cog)``.  spinemu.translate's Python engine uses this.
+        """
+        if c.engine.__class__ is not str:
+            return c.engine.key(c)
         tf = c.t + 12
         return tf + ((c.hub_phase - tf) & 15) + self.access_at[self.mem[c.pc]]
 

@@ -147,3 +147,67 @@ def test_compile_with_defines_matches_openspin(tmp_path, defines, image):
     code, _, err = run("compile", data / "ifdef_fast.spin", *defines, "-o", target)
     assert code == 0, err
     assert target.read_bytes() == (data / image).read_bytes()
+
+
+def test_progress_is_reported_on_a_terminal(monkeypatch):
+    """A long run shows progress on a terminal; the callback must reach the display."""
+    import spinemu.cli as cli
+
+    class TTY(io.StringIO):
+        def isatty(self):
+            return True
+
+    out = cli._Out(io.StringIO(), TTY())
+    progress, update = cli._progress_callback(out, None, 80_000_000, True)
+    assert progress is not None
+    with progress:
+        monkeypatch.setattr(cli.time, "monotonic", lambda: 1e9)
+        update(40_000_000)
+    assert progress.tasks[0].fields["sim"] == "0.500 s simulated"
+    assert cli._progress_callback(cli._Out(io.StringIO(), io.StringIO()), None, 1, True) == (None, None)
+
+
+def test_an_unknown_symbol_in_a_child_object_is_shown_as_in_the_house_style(tmp_path, monkeypatch):
+    for name in ("stepper.spin", "stepper_demo.spin"):
+        (tmp_path / name).write_text((SRC / name).read_text())
+    child = tmp_path / "stepper.spin"
+    child.write_text(child.read_text().replace("if (numSteps-- > 0)", "if (numStep-- > 0)"))
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run("compile", "stepper_demo.spin")
+    assert code == 1
+    assert err.splitlines() == [
+        "stepper.spin:146:15: error: unknown symbol 'numStep'",
+        "          if (numStep-- > 0)                           ' any steps left?",
+        "              ^",
+    ]
+    assert not (tmp_path / "stepper_demo.binary").exists()
+
+
+def test_translate_writes_one_module_per_object(tmp_path):
+    code, out, err = run("translate", SRC / "stepper_demo.spin", "-o", tmp_path / "py")
+    assert code == 0, err
+    names = sorted(p.name for p in (tmp_path / "py").glob("*.py"))
+    assert names == ["__init__.py", "stepper.py", "stepper_demo.py"]
+    text = (tmp_path / "py" / "stepper.py").read_text()
+    assert "class Stepper(" in text and "def runStepper(self, m1):" in text and "# L146" in text
+
+
+def test_translate_side_by_side_shows_both_languages():
+    code, out, err = run("translate", "--side-by-side", SRC / "simple_stepper.spin")
+    assert code == 0, err
+    assert "stpDelay" in out and "def " in out
+
+
+def test_translate_needs_an_output_folder():
+    code, _, err = run("translate", SRC / "simple_stepper.spin")
+    assert code == 2 and "-o OUT_DIR" in err
+
+
+def test_python_engine_gives_the_bytecode_engines_trace(tmp_path):
+    a, b = tmp_path / "bytecode.log", tmp_path / "python.log"
+    src = SRC / "simple_stepper.spin"
+    assert run("run", src, "--seconds", "0.3", "--trace", a)[0] == 0
+    code, _, err = run("run", src, "--seconds", "0.3", "--engine", "python", "--trace", b)
+    assert code == 0, err
+    code, out, _ = run("trace", "compare", a, b)
+    assert code == 0 and "largest offset 0 cycles" in out

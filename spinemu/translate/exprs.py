@@ -1,0 +1,457 @@
+"""Spin expressions as Python expressions.
+
+Each Spin expression becomes a Python expression string (:class:`X`) with its
+precedence and whether its value is already a Spin long (``wrapped``: signed,
+32 bits).  ``+ - * <<`` and friends are left unwrapped, as Python computes
+them; :meth:`ExprTranslator.value` wraps a result with ``wrap(...)`` only where
+the difference shows (a store to a local, a comparison, a call argument, a
+truth test).  Stores to hub variables and registers keep the low bits anyway.
+
+Spin expressions with side effects (``x := y``, ``x++``, ``x~``) become
+statements placed before the one that uses them (``hoist``), in Spin's
+evaluation order; a value computed before such a side effect is first saved
+in a temporary so that it keeps Spin's meaning.
+
+Operator mapping (Propeller Manual v1.2, "Operators"): Python's operator
+where it means the same on signed values (``+ - * & | ^ ~ == < max min``),
+a call of :mod:`spinemu.translate.spin` where it does not (``/`` is
+``spin.div``, ``//`` is ``spin.mod``, ``>>`` is ``spin.shr``, ...).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..frontend import ast as A
+from ..frontend.constants import float_bits
+
+__all__ = ["X", "ExprTranslator", "PREC"]
+
+# Python precedence levels (higher binds tighter)
+PREC = {"or": 1, "and": 2, "not": 3, "cmp": 4, "|": 5, "^": 6, "&": 7, "<<": 8, ">>": 8,
+        "+": 9, "-": 9, "*": 10, "unary": 11, "atom": 14}
+
+
+@dataclass
+class X:
+    """A translated expression: Python text, its precedence, is it a Spin long, is it a comparison/bool."""
+
+    text: str
+    prec: int = 14
+    wrapped: bool = True
+    boolean: bool = False
+    const: object = None          # its value, if a constant
+
+    def paren(self, prec: int) -> str:
+        return f"({self.text})" if self.prec < prec else self.text
+
+
+_CMP = {"==": "==", "<>": "!=", "<": "<", ">": ">", "=<": "<=", "=>": ">="}
+_PY_BIN = {"+": "+", "-": "-", "*": "*", "&": "&", "|": "|", "^": "^"}
+_HELPER_BIN = {"/": "spin.div", "//": "spin.mod", ">>": "spin.shr", "<-": "spin.rol", "->": "spin.ror",
+               "><": "spin.rev", "**": "spin.mul_high"}
+_HELPER_UN = {"^^": "spin.sqrt", ">|": "spin.encode", "|<": "spin.decode"}
+_KCONST = {"true": ("spin.TRUE", -1), "false": ("spin.FALSE", 0), "posx": ("spin.POSX", 0x7FFFFFFF),
+           "negx": ("spin.NEGX", -0x80000000)}
+_REG_NAMES = ("PAR", "CNT", "INA", "INB", "OUTA", "OUTB", "DIRA", "DIRB", "CTRA", "CTRB", "FRQA",
+              "FRQB", "PHSA", "PHSB", "VCFG", "VSCL")
+
+
+def _signed(v: int) -> int:
+    v &= 0xFFFFFFFF
+    return v - (1 << 32) if v & 0x80000000 else v
+
+
+def number_text(node) -> str:
+    """A Spin number literal as Python writes it (``%0011`` -> ``0b0011``, ``$FF`` -> ``0xFF``)."""
+    v = _signed(node.value)
+    t = node.text.strip().rstrip("_")
+    if v != node.value or not t:
+        return str(v)
+    if t.startswith("%%"):
+        return str(v)
+    if t.startswith("%"):
+        return "0b" + t[1:].lstrip("_")
+    if t.startswith("$"):
+        return "0x" + t[1:].lstrip("_")
+    if t.replace("_", "").isdigit():
+        t = t.lstrip("0_") or "0"           # Python has no leading zeros in decimals
+        return t if not t.endswith("_") else str(v)
+    return str(v)
+
+
+class ExprTranslator:
+    """Mix-in of the method translator (stmts.py): needs ``names``, ``lookup``, ``hoist``, ``temp``, ``error``."""
+
+    # ------------------------------------------------------------------ entry points
+    def value(self, node) -> str:
+        """``node`` as a Spin long (wrapped if needed)."""
+        x = self.expr(node)
+        return self.wrapped(x).text
+
+    def wrapped(self, x: X) -> X:
+        if x.boolean:
+            return X(f"spin.flag({x.text})")
+        if x.wrapped:
+            return x
+        return X(f"wrap({x.text})")
+
+    def cond(self, node) -> str:
+        """``node`` as a Python condition."""
+        x = self.expr(node)
+        if x.boolean:
+            return x.text
+        return self.wrapped(x).text
+
+    def expr(self, node) -> X:
+        method = getattr(self, "x_" + type(node).__name__, None)
+        if method is None:
+            self.unsupported(type(node).__name__, node)
+        return method(node)
+
+    # ------------------------------------------------------------------ atoms
+    def x_Number(self, node) -> X:
+        return X(number_text(node), 14 if node.value < 0x80000000 else 11, const=_signed(node.value))
+
+    def x_Float(self, node) -> X:
+        bits = float_bits(node.value)
+        return X(str(_signed(bits)), const=_signed(bits))
+
+    def x_Str(self, node) -> X:
+        data = self.obj.char_bytes(node.text)
+        if len(data) != 1:
+            self.unsupported("a string of several characters outside string()", node)
+        return X(f"ord({node.text!r})" if 32 <= data[0] < 127 and len(node.text) == 1 else str(data[0]),
+                 const=data[0])
+
+    def x_KConst(self, node) -> X:
+        k = node.name.lower()
+        if k in _KCONST:
+            text, v = _KCONST[k]
+            return X(text, const=v)
+        c = self.constant(node)
+        return X(str(c), const=c)
+
+    def x_Paren(self, node) -> X:
+        return self.expr(node.expr)
+
+    def constant(self, node):
+        """The folded value of a constant expression, or None."""
+        from ..frontend.constants import ConstError, NotConstant, evaluate
+        try:
+            c = evaluate(node, self.obj.resolve_const, self.obj.char_bytes)
+        except (NotConstant, ConstError, KeyError, TypeError):
+            return None
+        return _signed(c.bits)
+
+    # ------------------------------------------------------------------ names
+    def x_NameRef(self, node) -> X:
+        kind, sym = self.lookup(node.name, node)
+        if kind == "const":
+            return X(f"self.{self.names.attr(node.name)}", const=sym)
+        if kind == "method":
+            return self.call_text(node, node.name, [])
+        return self.read_var(kind, sym, node)
+
+    def x_ResultRef(self, node) -> X:
+        if node.index is not None:
+            if not self.in_frame:
+                self.unsupported("an indexed result (result[i])", node)
+            return X(f'{self.frame_name}.at("{self.result_name}")[{self.value(node.index)}]')
+        return X(f"{self.frame_name}.{self.result_name}" if self.in_frame else self.result_name)
+
+    def read_var(self, kind, sym, node) -> X:
+        index = getattr(node, "index", None)
+        if kind == "local":
+            name = self.names.local(node.name)
+            if not self.in_frame:
+                if index is not None:
+                    self.unsupported(f"an indexed local variable ({node.name}[...])", node)
+                return X(name)
+            if index is None:
+                return X(f"{self.frame_name}.{name}" + ("[0]" if sym.count > 1 else ""))
+            if sym.count > 1:
+                return X(f"{self.frame_name}.{name}[{self.value(index)}]")
+            return X(f'{self.frame_name}.at("{name}")[{self.value(index)}]')
+        attr = self.names.attr(node.name)
+        if index is None:
+            if sym.count > 1:
+                return X(f"self.{attr}[0]")       # an array's name alone is its first element
+            return X(f"self.{attr}")
+        i = self.value(index)
+        if sym.count > 1:
+            return X(f"self.{attr}[{i}]")
+        return X(f'self.at("{attr}")[{i}]')
+
+    def x_MemberRef(self, node) -> X:
+        base = node.base
+        if isinstance(base, A.ResultRef):
+            kind, name = "local", self.result_name
+        else:
+            kind, sym = self.lookup(base.name, base)
+            name = self.names.local(base.name) if kind == "local" else self.names.attr(base.name)
+        if kind not in ("var", "dat", "local") or (kind == "local" and not self.in_frame):
+            self.unsupported("a member access (x.byte[i]) of a local variable", node)
+        owner = self.frame_name if kind == "local" else "self"
+        i = self.value(node.sub) if node.sub is not None else "0"
+        index = self.value(base.index) if getattr(base, "index", None) is not None else "0"
+        return X(f'{owner}.at("{name}", {index}, size={node.size})[{i}]')
+
+    def x_MemRef(self, node) -> X:
+        mem = {1: "byte", 2: "word", 4: "long"}[node.size]
+        base = self.expr(node.base).text
+        if node.index is None:
+            return X(f"spin.{mem}[{base}]")
+        return X(f"spin.{mem}[{base}, {self.expr(node.index).text}]")
+
+    def x_RegRef(self, node) -> X:
+        name = node.name.upper()
+        if node.bit is None:
+            return X(f"cog.{name}")
+        if node.bit2 is None:
+            return X(f"cog.{name}[{self.expr(node.bit).text}]")
+        return X(f"cog.{name}[{self.expr(node.bit).text}:{self.expr(node.bit2).text}]")
+
+    def x_SprRef(self, node) -> X:
+        return X(f"cog.spr[{self.expr(node.index).text}]")
+
+    def x_ObjConst(self, node) -> X:
+        entry = self.lookup(node.obj, node)
+        sym = entry[1]
+        obj = f"self.{self.names.attr(node.obj)}" + ("[0]" if getattr(sym, "count", 1) > 1 else "")
+        value = self.constant(node)
+        return X(f"{obj}.{self.names.child_const(node.obj, node.name)}", const=value)
+
+    # ------------------------------------------------------------------ calls
+    def x_Call(self, node) -> X:
+        return self.call_text(node, node.name, node.args)
+
+    def call_text(self, node, name, args) -> X:
+        kind, _sym = self.lookup(name, node)
+        if kind != "method":
+            self.unsupported(f"a call of '{name}', which is not a method", node)
+        return X(f"self.{self.names.attr(name)}({self.args(args)})")
+
+    def args(self, args) -> str:
+        return ", ".join(self.value(a) for a in args)
+
+    def x_ObjCall(self, node) -> X:
+        obj = f"self.{self.names.attr(node.obj)}"
+        if node.index is not None:
+            obj += f"[{self.value(node.index)}]"
+        return X(f"{obj}.{self.names.child_method(node.obj, node.method)}({self.args(node.args)})")
+
+    def x_AbortTrap(self, node) -> X:
+        call = node.call
+        if isinstance(call, A.NameRef):
+            call = A.Call(call.pos, call.name, [])
+        x = self.expr(call)
+        func, _, rest = x.text.partition("(")
+        rest = rest[:-1]
+        return X(f"spin.trap({func}" + (f", {rest})" if rest else ")"))
+
+    # ------------------------------------------------------------------ operators
+    def x_Unary(self, node) -> X:
+        op = node.op.upper() if node.op.isalpha() else node.op
+        x = self.expr(node.operand)
+        if op == "+":
+            return x
+        if op == "-":
+            if x.const is not None and isinstance(node.operand, (A.Number, A.NameRef, A.ObjConst)):
+                return X(f"-{x.paren(11)}", 11, wrapped=x.const != -0x80000000, const=_signed(-x.const))
+            return X(f"-{x.paren(11)}", 11, wrapped=False)
+        if op == "!":
+            return X(f"~{x.paren(11)}", 11, wrapped=x.wrapped)
+        if op == "NOT":
+            return X(f"not {self.truth(x)}", 3, boolean=True)
+        if op == "||":
+            return X(f"abs({self.wrapped(x).text})", wrapped=False)
+        if op in _HELPER_UN:
+            return X(f"{_HELPER_UN[op]}({x.text})")
+        if op in ("~", "~~", "?"):
+            return self.pre_op(A.PreOp(node.pos, op, node.operand))
+        self.unsupported(f"the operator {node.op}", node)
+
+    def truth(self, x: X) -> str:
+        return x.text if x.boolean else self.wrapped(x).paren(4)
+
+    def x_Binary(self, node) -> X:
+        op = node.op.upper() if node.op.isalpha() else node.op
+        left = self.expr(node.left)
+        mark = len(self.hoisted)
+        right = self.expr(node.right)
+        if len(self.hoisted) > mark and left.const is None and not _is_plain(left):
+            tmp = self.temp("value")
+            self.hoisted.insert(mark, f"{tmp} = {left.text}")
+            left = X(tmp, wrapped=left.wrapped, boolean=left.boolean)
+        if op in _CMP:
+            return X(f"{self.wrapped(left).paren(5)} {_CMP[op]} {self.wrapped(right).paren(5)}", 4, boolean=True)
+        if op in ("AND", "OR"):
+            word = op.lower()
+            lp, rp = PREC[word], PREC[word] + 1
+            lt = left.paren(lp) if left.boolean else self.wrapped(left).paren(lp)
+            rt = right.paren(rp) if right.boolean else self.wrapped(right).paren(rp)
+            return X(f"{lt} {word} {rt}", lp, boolean=True)
+        if op in _PY_BIN:
+            p = PREC[op]
+            wrapped = op in ("&", "|", "^") and left.wrapped and right.wrapped and not left.boolean \
+                and not right.boolean
+            lt = self.wrapped(left).paren(p) if left.boolean else left.paren(p)
+            rt = self.wrapped(right).paren(p + 1) if right.boolean else right.paren(p + 1)
+            return X(f"{lt} {op} {rt}", p, wrapped=wrapped)
+        if op == "<<":
+            count = right.const & 31 if right.const is not None else None
+            rt = str(count) if count is not None else f"({right.text} & 31)"
+            return X(f"{left.paren(9)} << {rt}", 8, wrapped=False)
+        if op == "~>":
+            count = right.const & 31 if right.const is not None else None
+            rt = str(count) if count is not None else f"({right.text} & 31)"
+            return X(f"{self.wrapped(left).paren(9)} >> {rt}", 8)
+        if op == "#>":
+            return X(f"max({self.value_x(left)}, {self.value_x(right)})")
+        if op == "<#":
+            return X(f"min({self.value_x(left)}, {self.value_x(right)})")
+        if op in _HELPER_BIN:
+            return X(f"{_HELPER_BIN[op]}({left.text}, {right.text})")
+        self.unsupported(f"the operator {node.op}", node)
+
+    def value_x(self, x: X) -> str:
+        return self.wrapped(x).text
+
+    # ------------------------------------------------------------------ side effects
+    def x_Assign(self, node) -> X:
+        if not self.narrow(node.target) and not isinstance(node.target, A.RegRef):
+            self.assign(node)
+            return self.reread(node.target)
+        # a byte/word/bit-field target keeps the low bits, but the expression's value is the whole result
+        value = self.expr(node.value)
+        if node.op != ":=":
+            op = node.op.upper() if node.op.isalpha() else node.op
+            value = self.wrapped(self.binop(op, self.expr(node.target), value))
+        tmp = self.temp("value")
+        self.hoisted.append(f"{tmp} = {self.wrapped(value).text}")
+        self.store(node.target, X(tmp), len(self.hoisted))
+        return X(tmp)
+
+    def x_PreOp(self, node) -> X:
+        return self.pre_op(node)
+
+    def pre_op(self, node) -> X:
+        if (node.op in ("~", "~~", "?") and self.narrow(node.target)) or isinstance(node.target, A.RegRef):
+            # the value is what was computed (a register such as CNT does not keep what is written)
+            old = self.expr(node.target).text
+            new = {"~": f"spin.sign_extend_byte({old})", "~~": f"spin.sign_extend_word({old})",
+                   "?": f"spin.random_forward({old})", "++": f"wrap({old} + 1)", "--": f"wrap({old} - 1)"}[node.op]
+            tmp = self.temp("value")
+            self.hoisted.append(f"{tmp} = {new}")
+            self.store(node.target, X(tmp), len(self.hoisted))
+            return X(tmp)
+        self.step(node.target, node.op)
+        return self.reread(node.target)
+
+    def narrow(self, target) -> bool:
+        """Is ``target`` narrower than a long (its stored value may differ from the assigned one)?"""
+        if isinstance(target, (A.MemRef, A.MemberRef)):
+            return target.size < 4
+        if isinstance(target, A.RegRef):
+            return target.bit is not None
+        if isinstance(target, A.NameRef):
+            kind, sym = self.lookup(target.name, target)
+            return kind in ("var", "dat") and sym.size < 4
+        return False
+
+    def x_PostOp(self, node) -> X:
+        if node.op == "?":          # x? leaves the new value, like ?x (Propeller Manual, "Random")
+            if self.narrow(node.target) or isinstance(node.target, A.RegRef):
+                tmp = self.temp("value")
+                self.hoisted.append(f"{tmp} = spin.random_reverse({self.expr(node.target).text})")
+                self.store(node.target, X(tmp), len(self.hoisted))
+                return X(tmp)
+            self.step(node.target, node.op, post=True)
+            return self.reread(node.target)
+        old = self.temp("old_" + _short(node.target))
+        self.hoisted.append(f"{old} = {self.expr(node.target).text}")
+        self.step(node.target, node.op, post=True)
+        return X(old)
+
+    def reread(self, target) -> X:
+        """The value an assignment leaves: the target read again (longs), else a saved copy."""
+        if isinstance(target, (A.NameRef, A.ResultRef)) and getattr(target, "index", None) is None:
+            kind, sym = self.lookup(getattr(target, "name", "result"), target)
+            if kind == "local" or getattr(sym, "size", 4) == 4:
+                return self.expr(target)
+        tmp = self.temp("value")
+        self.hoisted.append(f"{tmp} = {self.expr(target).text}")
+        return X(tmp)
+
+    # ------------------------------------------------------------------ addresses
+    def x_AddrOf(self, node) -> X:
+        t = node.target
+        if isinstance(t, A.Paren):
+            t = t.expr
+        if isinstance(t, A.NameRef):
+            kind, sym = self.lookup(t.name, t)
+            if kind in ("var", "dat"):
+                attr = self.names.attr(t.name)
+                if t.index is None:
+                    return X(f'self.addr("{attr}")')
+                return X(f'self.addr("{attr}", {self.value(t.index)})')
+            if kind == "local" and self.in_frame:
+                name = self.names.local(t.name)
+                if t.index is None:
+                    return X(f'{self.frame_name}.addr("{name}")')
+                return X(f'{self.frame_name}.addr("{name}", {self.value(t.index)})')
+            self.unsupported(f"the address of a local variable (@{t.name})", node)
+        if isinstance(t, A.ResultRef) and self.in_frame:
+            if t.index is None:
+                return X(f'{self.frame_name}.addr("{self.result_name}")')
+            return X(f'{self.frame_name}.addr("{self.result_name}", {self.value(t.index)})')
+        if isinstance(t, A.MemRef):
+            size = t.size
+            base = self.expr(t.base)
+            if t.index is None:
+                return base
+            return X(f"{base.paren(9)} + {size} * {self.expr(t.index).paren(10)}", 9, wrapped=False)
+        if isinstance(t, A.MemberRef):
+            return X(_member_addr(self.expr(t).text, t.size), 9, wrapped=False)
+        self.unsupported("this address-of (@) form", node)
+
+    def x_ObjAddr(self, node) -> X:
+        return X(f"self.object_base() + {self.expr(node.operand).paren(10)}", 9, wrapped=False)
+
+    # ------------------------------------------------------------------ lookups
+    def x_Lookup(self, node) -> X:
+        items = []
+        costs = []
+        down = node.name.lower().startswith("lookdown")
+        for item in node.items:
+            if isinstance(item, A.Range):
+                items.append(f"spin.span({self.value(item.low)}, {self.value(item.high)})")
+                costs.append(self.lookup_item_cost([item.low, item.high], down, True))
+            elif isinstance(item, A.Str) and len(self.obj.char_bytes(item.text)) > 1:
+                for b in self.obj.char_bytes(item.text):
+                    items.append(str(b))
+                    costs.append(self.lookup_item_cost([A.Number(item.pos, b, str(b))], down, False))
+            else:
+                items.append(self.value(item))
+                costs.append(self.lookup_item_cost([item], down, False))
+        self.pending_lookups.append(costs)
+        return X(f"spin.{node.name.lower()}({self.value(node.value)}, [{', '.join(items)}])")
+
+    def x_Range(self, node):
+        self.unsupported("a range outside case or lookup", node)
+
+
+def _is_plain(x: X) -> bool:
+    t = x.text
+    return t.isidentifier()
+
+
+def _short(target) -> str:
+    name = getattr(target, "name", None) or "value"
+    return name if name.isidentifier() else "value"
+
+
+def _member_addr(text: str, size: int) -> str:
+    # self.at("x", i, size=n)[j]  ->  self.at("x", i, size=n).addr + n * (j)
+    head, _, idx = text.rpartition("[")
+    return f"{head}.addr + {size} * ({idx[:-1]})"

@@ -1,0 +1,609 @@
+"""Spin statements as Python statements, and what each costs.
+
+One :class:`MethodTranslator` per method writes the method's lines into a
+:class:`~spinemu.translate.code.Code` and records, for the Python lines it
+writes, the cycles the weaver (weave.py) charges before or after them:
+
+==========================  =============================================  ==========================
+Spin                        Python                                         charged
+==========================  =============================================  ==========================
+``if c`` / ``elseif``       ``if c:`` / ``elif c:`` / ``else:``            condition + JZ before it;
+                                                                           JMP after the branch
+``case v``                  ``if v == 1: ... elif v in (2, 3): ...``       compares per branch, CASE_DONE
+``repeat``                  ``while True:``                                JMP after the body
+``repeat n``                ``for _ in range(n):``                         n + TJZ; DJNZ per pass
+``repeat while c``          ``while c:``                                   c + JZ per pass; JMP
+``repeat ... until c``      ``while True: ...; if c: break``               c + JZ per pass
+``repeat x from a to b``    ``for x in range(a, b + 1):`` (constant        REPEAT per pass
+                            bounds) or a ``while True`` with
+                            ``spin.repeat_step``
+``next`` / ``quit``         ``continue`` / ``break``                       the jump (and case pops)
+``abort v`` / ``\\f(x)``    ``raise spin.Abort(v)`` / ``spin.trap(f, x)``
+==========================  =============================================  ==========================
+
+Costs come from the compiler's own bytecode for each piece (costs.py).
+"""
+from __future__ import annotations
+
+import re
+
+from ..compiler.code import CodeBuffer, Label
+from ..compiler.exprs import push_const_bytes
+from ..compiler import stmts as cstmts
+from ..frontend import ast as A
+from ..frontend.ast import key
+from .costs import Op, call_depths, ceil16, drop_result_delta, price, jump_op, split, split_read
+from .exprs import ExprTranslator, X
+from .loops import LoopTranslator
+
+__all__ = ["MethodTranslator"]
+
+_PY_AUG = {"+", "-", "*", "&", "|", "^"}
+
+
+class MethodTranslator(ExprTranslator, LoopTranslator):
+    """Translates one Spin method (see the module docstring).
+
+    Args:
+        objt: the object translator (program.py): names, symbols, the compiler's object.
+        method: the ``ast.Method``.
+        code: where the lines go.
+    """
+
+    def __init__(self, objt, method, code):
+        self.objt = objt
+        self.obj = objt.oc
+        self.names = objt.names
+        self.method = method
+        self.code = code
+        self.T = objt.timing
+        self.mc = cstmts.MethodCompiler(self.obj, method)
+        self.frame = self.mc.frame
+        self.result_name = self.names.local(method.result or "result")
+        self.in_frame = needs_hub_frame(method)
+        self.frame_name = self.names.temp_base("loc")
+        self.hoisted: list = []
+        self.loops: list = []
+        self.temps: set = set()
+        self.pending_lookups: list = []
+        self.exits: set = set()             # lines that leave their block (return, raise, break, continue)
+        self.last_data = b""
+        self.cur_pos = method.pos
+        self.path = method.pos.path
+
+    # ------------------------------------------------------------------ helpers for exprs.py
+    def unsupported(self, what: str, node):
+        self.objt.unsupported(what, node)
+
+    def lookup(self, name: str, node):
+        k = key(name)
+        if k in self.frame:
+            return "local", self.frame[k]
+        if k == "result":
+            from ..compiler.symbols import LocalSymbol
+            return "local", LocalSymbol("result", 0, 1)
+        return self.objt.lookup(name, node)
+
+    def temp(self, prefix: str) -> str:
+        base = self.names.temp_base(prefix)
+        name, n = base, 1
+        while name in self.temps:
+            n += 1
+            name = f"{base}{n}"
+        self.temps.add(name)
+        return name
+
+    # ------------------------------------------------------------------ costs
+    def piece(self, fn, loop_count: bool = False, **kw) -> list:
+        """Price the bytecode the compiler makes for ``fn()`` (a statement or expression)."""
+        mc = self.mc
+        saved = mc.code, mc.loops
+        mc.code = CodeBuffer()
+        nxt, end = Label(), Label()
+        mc.loops = [cstmts._Loop(nxt, end, count=loop_count)]
+        try:
+            fn()
+            mc.code.mark(nxt)
+            mc.code.mark(end)
+            # laid out where the statement really is, so that address pushes get their real size
+            spans, _ = mc.code.layout(self.objt.offset_of(self.cur_pos, self.method))
+        finally:
+            mc.code, mc.loops = saved
+        data = b"".join(s.data for s in spans if s.pos is not None or s.note != "string")   # not the pool
+        self.last_data = data
+        return price(self.T, data, **kw)
+
+    def nparams(self, data, i: int) -> int:
+        """Parameters of the method the CALL/CALL_OBJ at ``data[i]`` calls."""
+        if data[i] == 0x05:
+            return self.obj.symbols.methods[data[i + 1] - 1].nparams
+        entry, method = data[i + 1], data[i + 2]
+        for sym in self.obj.symbols.objects:
+            if sym.index <= entry < sym.index + sym.count:
+                pubs = [m for m in sym.unit.spin.methods if m.public]
+                return len(pubs[method - 1].params)
+        return 0
+
+    def note_depths(self, lines) -> None:
+        """Record the stack bytes in use at the first call of the piece compiled last, for ``lines``."""
+        depths = call_depths(self.last_data, self.nparams)
+        if depths and depths[0]:
+            for line in lines:
+                if line is not None:
+                    self.code.call_depths[line] = depths[0]
+
+    def size(self, fn) -> int:
+        mc = self.mc
+        saved = mc.code, mc.loops
+        mc.code = CodeBuffer()
+        nxt, end = Label(), Label()
+        mc.loops = [cstmts._Loop(nxt, end)]
+        try:
+            fn()
+            mc.code.mark(nxt)
+            mc.code.mark(end)
+            start = self.objt.offset_of(self.cur_pos, self.method)
+            _, n = mc.code.layout(start)
+        finally:
+            mc.code, mc.loops = saved
+        return n - start
+
+    def body_size(self, stmts) -> int:
+        return self.size(lambda: self.mc.block(stmts))
+
+    def expr_ops(self, node) -> list:
+        return self.piece(lambda: self.mc.expr(node))
+
+    def lookup_item_cost(self, exprs, down: bool, is_range: bool) -> tuple:
+        """``(cycles of the item, extra cycles when it matches)`` of one lookup/lookdown item."""
+        T = self.T
+        ops = [o for e in exprs for o in self.expr_ops(e)]
+        name = ("lookdown" if down else "lookup") + ("_range" if is_range else "_value")
+        table = getattr(T, name)
+        found, missed = ceil16(table[True] + 12), ceil16(table[False] + 12)
+        return sum(ceil16(o.rest + 12) for o in ops) + missed, found - missed
+
+    def charge(self, line: int, slot: str, ops) -> None:
+        """Charge ``ops`` at ``slot`` of ``line``; nothing runs after a return, abort, next or quit."""
+        if line is not None and ops and not (slot == "a" and line in self.exits):
+            self.code.charge(line, slot, list(ops))
+
+    def charge_add(self, line: int, slot: str, cycles: int) -> None:
+        if line is not None and cycles and not (slot == "a" and line in self.exits):
+            self.code.charge_add(line, slot, cycles)
+
+    # ------------------------------------------------------------------ emitting
+    def emit(self, text: str, node=None) -> int:
+        line = self.code.line(text, node.pos.line if node is not None else None)
+        for _ in range(text.count("spin.look")):
+            if self.pending_lookups:                # what each lookup item costs, for the runtime
+                costs = self.pending_lookups.pop(0)
+                self.code.lookups[line] = ([c for c, _ in costs], ceil16(self.T.look_done + 12),
+                                           [f for _, f in costs])
+        return line
+
+    def block(self, stmts) -> tuple:
+        """Emit a body (indented); ``(first line, last statement line)``."""
+        self.code.indent += 1
+        first = last = None
+        try:
+            if not stmts:
+                first = last = self.emit("pass")
+            for st in stmts:
+                f, last = self.statement(st)
+                first = first or f
+        finally:
+            self.code.indent -= 1
+        return first, last
+
+    def statement(self, st) -> tuple:
+        self.cur_pos = st.pos
+        self.code.comments_before(st.pos.line)
+        method = getattr(self, "s_" + type(st).__name__)
+        return method(st)
+
+    def flush(self, main, node) -> tuple:
+        """Emit the hoisted lines and ``main`` (a line or None); ``(first, last)``."""
+        lines = self.hoisted + ([main] if main else [])
+        self.hoisted = []
+        first = last = None
+        for text in lines:
+            last = self.emit(text, node)
+            first = first or last
+
+        if first is None:
+            first = last = self.emit("pass", node)
+        return first, last
+
+    # ------------------------------------------------------------------ simple statements
+    def s_ExprStmt(self, st) -> tuple:
+        e = st.expr
+        t = type(e)
+        main = None
+        if t is A.Assign:
+            self.assign(e)
+        elif t is A.PreOp:
+            self.step(e.target, e.op)
+        elif t is A.PostOp:
+            self.step(e.target, e.op, post=True)
+        elif t is A.Unary and isinstance(e.operand, A.VARIABLE_NODES) and self.constant(e) is None:
+            self.unary_assign(e)
+        elif t is A.AbortTrap:
+            main = self.expr(e).text[:-1] + ", keep_result=False)"
+        else:
+            main = self.expr(e).text
+        ops = self.piece(lambda: self.mc.block([st]), run_params=self.run_params(st))
+        pre, post = split(ops)
+        pre, mid = split_read(pre)
+        first, last = self.flush(main, st)
+        self.note_depths(range(first, last + 1))
+        self.charge(first, "b", pre)
+        if mid:
+            self.code.charge_mid(first, mid)
+        if t in (A.Call, A.ObjCall) or (t is A.NameRef and main):
+            self.charge_add(last, "p", drop_result_delta(self.T))
+        self.charge(last, "p", post)
+        return first, last
+
+    def run_params(self, st) -> int:
+        """Parameters of the Spin method a ``cognew``/``coginit`` in ``st`` starts (for RUN's cost)."""
+        from .program import _walk
+        for n in _walk([st]):
+            if isinstance(n, A.Builtin) and n.name.lower() in ("cognew", "coginit") and n.args:
+                first = n.args[0] if n.name.lower() == "cognew" else n.args[min(1, len(n.args) - 1)]
+                first = first.expr if isinstance(first, A.Paren) else first
+                if isinstance(first, A.Call):
+                    return len(first.args)
+        return 0
+
+    def result_text(self) -> str:
+        return f"{self.frame_name}.{self.result_name}" if self.in_frame else self.result_name
+
+    def s_Return(self, st) -> tuple:
+        if st.value is None:
+            main = f"return {self.result_text()}" if self.objt.uses_result(self.method) else "return"
+        else:
+            main = f"return {self.value(st.value)}"
+        return self.ending(st, main)
+
+    def s_Abort(self, st) -> tuple:
+        if st.value is not None:
+            return self.ending(st, f"raise spin.Abort({self.value(st.value)})")
+        value = self.result_text() if self.objt.uses_result(self.method) else "0"
+        return self.ending(st, f"raise spin.Abort({value}, bare=True)")
+
+    def ending(self, st, main) -> tuple:
+        """``return``/``abort``: what comes after a call in the value is paid after the value (weave.py)."""
+        ops = self.piece(lambda: self.mc.block([st]))
+        first, last = self.flush(main, st)
+        self.note_depths(range(first, last + 1))
+        pre, post = split(ops)
+        pre, mid = split_read(pre)
+        self.charge(first, "b", pre)
+        if mid:
+            self.code.charge_mid(first, mid)
+        self.charge(last, "p", post)            # paid between the value and leaving (weave.py)
+        self.exits.add(last)
+        return first, last
+
+    def s_Next(self, st) -> tuple:
+        loop = self.loop_of(st, "next")
+        ops = self.case_pops(loop) + [jump_op(self.T, "JMP")] + loop.next_ops
+        if loop.emit_next is not None:          # Spin's next goes to the loop's test: write it here
+            first = loop.emit_next(ops)
+            line = self.emit("continue", st)
+            self.exits.add(line)
+            return first, line
+        line = self.emit("continue", st)
+        self.charge(line, "b", ops)
+        self.exits.add(line)
+        return line, line
+
+    def s_Quit(self, st) -> tuple:
+        loop = self.loop_of(st, "quit")
+        ops = self.case_pops(loop) + [jump_op(self.T, loop.quit_op, taken=True)]
+        line = self.emit("break", st)
+        self.charge(line, "b", ops)
+        self.exits.add(line)
+        return line, line
+
+    def loop_of(self, st, word):
+        if not self.loops:
+            self.unsupported(f"'{word}' outside a repeat loop", st)
+        return self.loops[-1]
+
+    def case_pops(self, loop) -> list:
+        if not loop.cases:
+            return []
+        return price(self.T, push_const_bytes(8 * loop.cases) + b"\x14")
+
+    # ------------------------------------------------------------------ assignments
+    def assign(self, node) -> None:
+        target = node.target
+        value = self.expr(node.value)
+        mark = len(self.hoisted)
+        if node.op == ":=":
+            self.store(target, value, mark)
+            return
+        op = node.op.upper() if node.op.isalpha() else node.op
+        self.store_op(target, op, value, mark)
+
+    def target_text(self, target, value: X, mark: int):
+        """The target as an assignment target; saves ``value`` first if the target hoists code."""
+        before = len(self.hoisted)
+        text = self.expr(target).text
+        written = [h.split(" ")[0] for h in self.hoisted[before:]]
+        if (any(w in value.text for w in written) or (written and _has_call(value.text))) and value.const is None \
+                and not value.text.isidentifier():
+            tmp = self.temp("value")
+            self.hoisted.insert(mark, f"{tmp} = {value.text}")
+            value = X(tmp, wrapped=value.wrapped, boolean=value.boolean)
+        return text, value
+
+    def is_local(self, target) -> bool:
+        """Is ``target`` a Python local (stores must wrap to 32 bits themselves)?"""
+        if self.in_frame:
+            return False
+        if isinstance(target, A.ResultRef):
+            return True
+        return isinstance(target, A.NameRef) and key(target.name) in self.frame
+
+    def store(self, target, value: X, mark: int) -> None:
+        text, value = self.target_text(target, value, mark)
+        if self.is_local(target):
+            self.hoisted.append(f"{text} = {self.wrapped(value).text}")
+        else:
+            v = self.wrapped(value).text if value.boolean else value.text
+            self.hoisted.append(f"{text} = {v}")
+
+    def store_op(self, target, op: str, value: X, mark: int) -> None:
+        text, value = self.target_text(target, value, mark)
+        local = self.is_local(target)
+        if op in _PY_AUG and not local and not value.boolean:
+            self.hoisted.append(f"{text} {op}= {value.text}")
+            return
+        new = self.binop(op, X(text), value)
+        self.hoisted.append(f"{text} = {(self.wrapped(new) if local or new.boolean else new).text}")
+
+    def binop(self, op: str, left: X, right: X) -> X:
+        """``left OP right`` for already translated operands (assignment operators)."""
+        return self.x_Binary(A.Binary(None, op, _Given(None, left), _Given(None, right)))
+
+    def step(self, target, op: str, post: bool = False) -> None:
+        text, _ = self.target_text(target, X("0"), len(self.hoisted))
+        local = self.is_local(target)
+        if op in ("++", "--"):
+            sign = "+" if op == "++" else "-"
+            self.hoisted.append(f"{text} = wrap({text} {sign} 1)" if local else f"{text} {sign}= 1")
+        elif op == "~":
+            self.hoisted.append(f"{text} = 0" if post else f"{text} = spin.sign_extend_byte({text})")
+        elif op == "~~":
+            self.hoisted.append(f"{text} = -1" if post else f"{text} = spin.sign_extend_word({text})")
+        elif op == "?":
+            fn = "random_reverse" if post else "random_forward"
+            self.hoisted.append(f"{text} = spin.{fn}({text})")
+        else:
+            self.unsupported(f"the operator {op}", target)
+
+    def unary_assign(self, e) -> None:
+        """``-x``, ``!x``, ``||x`` ... written as a statement: Spin changes ``x`` in place."""
+        text, _ = self.target_text(e.operand, X("0"), len(self.hoisted))
+        new = self.wrapped(self.x_Unary(A.Unary(e.pos, e.op, _Given(e.pos, X(text)))))
+        self.hoisted.append(f"{text} = {new.text}")
+
+    def x__Given(self, node) -> X:
+        return node.x
+
+    # ------------------------------------------------------------------ builtins
+    def x_Builtin(self, node) -> X:
+        name = node.name.lower()
+        args = node.args or []
+        if name in ("constant", "float", "round", "trunc"):
+            v = self.constant(node)
+            return X(str(v), 14 if v >= 0 else 11, const=v)
+        if name == "string":
+            offset = self.objt.string_offset(self.method, node)
+            text = "".join(a.text if isinstance(a, A.Str) else "" for a in args)
+            return X(f"self.string(0x{offset:04X}, {text!r})" if text else f"self.string(0x{offset:04X})")
+        if name in ("cognew", "coginit"):
+            return self.cog_start(node, name, args)
+        simple = ("waitcnt", "waitpeq", "waitpne", "cogstop", "lockret", "lockset", "lockclr", "strsize",
+                  "strcomp", "bytefill", "wordfill", "longfill", "bytemove", "wordmove", "longmove",
+                  "clkset", "waitvid")
+        if name in simple:
+            return X(f"spin.{name}({', '.join(self.value(a) for a in args)})")
+        if name in ("locknew", "cogid", "clkfreq", "clkmode", "reboot"):
+            return X(f"spin.{name}()")
+        if name == "chipver":
+            return X("spin.byte[-1]")
+        self.unsupported(f"the built-in {node.name}", node)
+
+    def cog_start(self, node, name, args) -> X:
+        new = name == "cognew"
+        first = args[0] if new else args[1]
+        rest = args[1] if new else args[2]
+        target = first.expr if isinstance(first, A.Paren) else first
+        head = "" if new else f"{self.value(args[0])}, "
+        if isinstance(target, (A.Call, A.NameRef)) and self.lookup(target.name, target)[0] == "method":
+            call_args = target.args if isinstance(target, A.Call) else []
+            params = "".join(f", {self.value(a)}" for a in call_args)
+            return X(f"spin.{name}({head}self.{self.names.attr(target.name)}{params}, stack={self.value(rest)})")
+        return X(f"spin.{name}({head}{self.value(first)}, {self.value(rest)}, stack=0)")
+
+    # ------------------------------------------------------------------ if
+    def s_If(self, st) -> tuple:
+        first = top = None
+        last = len(st.branches) - 1
+        closers = 0
+        for i, br in enumerate(st.branches):
+            c = self.cond(br.cond)
+            if br.negate:
+                c = f"not ({c})" if " " in c else f"not {c}"
+            hoisted = self.hoisted
+            self.hoisted = []
+            if hoisted and i > 0:
+                self.emit("else:", br)
+                self.code.indent += 1
+                closers += 1
+            branch_first = None
+            for h in hoisted:
+                ln = self.emit(h, br)
+                branch_first = branch_first or ln
+            word = "if" if i == 0 or hoisted else "elif"
+            header = self.emit(f"{word} {c}:", br)
+            top = top or header
+            branch_first = branch_first or header
+            first = first or branch_first
+            body_size = self.body_size(br.body)
+            j = "JNZ" if br.negate else "JZ"
+            ops = self.expr_ops(br.cond) + [jump_op(self.T, j, body_size + 3 > 63, taken=False)]
+            pre, post = split(ops)
+            self.charge(branch_first, "b", pre)
+            body_first, body_last = self.block(br.body)
+            self.charge(body_first, "b", post)
+            self.charge(header, "e", post)
+            if i < last or st.else_body is not None:
+                self.charge(body_last, "a", [jump_op(self.T, "JMP", False)])
+        if st.else_body is not None:
+            self.code.comments_before(st.else_pos.line if st.else_pos else st.pos.line)
+            self.code.line("else:", st.else_pos.line if st.else_pos else None)
+            self.block(st.else_body)
+        self.code.indent -= closers
+        return first, top
+
+    # ------------------------------------------------------------------ case
+    def s_Case(self, st) -> tuple:
+        sel_x = self.expr(st.value)
+        sel = self.wrapped(sel_x).text
+        pre_lines = list(self.hoisted)
+        self.hoisted = []
+        if not (sel.isidentifier() or sel.startswith("self.") and sel[5:].isidentifier()):
+            tmp = self.temp("selector")
+            pre_lines.append(f"{tmp} = {sel}")
+            sel = tmp
+        first = None
+        for text in pre_lines:
+            ln = self.emit(text, st)
+            first = first or ln
+        end = self.objt.offset_of(st.pos, self.method) + self.body_size([st])
+        imm = 1 if end < 0x100 else 2
+        head = [Op(0x37 + imm, self.T.push_imm[imm])] + self.expr_ops(st.value)
+        items = [it for it in st.items if it.values is not None]
+        other = next((it for it in st.items if it.values is None), None)
+        jump_long = self.case_jumps(items, other)
+        if self.loops:
+            self.loops[-1].cases += 1
+        header = top = body_last = None
+        try:
+            for n, item in enumerate(items):
+                conds, ops, per_value = [], [], []
+                for v in item.values:
+                    ops = []
+                    if isinstance(v, A.Range):
+                        lo, hi = self.value(v.low), self.value(v.high)
+                        clo, chi = self.constant(v.low), self.constant(v.high)
+                        if clo is not None and chi is not None and clo > chi:
+                            lo, hi = hi, lo
+                        if clo is not None and chi is not None:
+                            conds.append(f"{lo} <= {sel} <= {hi}")
+                        else:
+                            conds.append(f"spin.within({sel}, {lo}, {hi})")
+                        ops += self.expr_ops(v.low) + self.expr_ops(v.high) + \
+                            [jump_op(self.T, "CASE_RANGE", jump_long[id(v)])]
+                    else:
+                        conds.append(f"{sel} == {self.value(v)}")
+                        ops += self.expr_ops(v) + [jump_op(self.T, "CASE_VALUE", jump_long[id(v)])]
+                    per_value.append(ops)
+                if self.hoisted:
+                    self.unsupported("a case value with side effects", item)
+                cond = " or ".join(conds)
+                self.code.comments_before(item.pos.line)
+                header = self.emit(f"{'if' if n == 0 else 'elif'} {cond}:", item)
+                top = top or header
+                first = first or header
+                if len(per_value) == 1:
+                    self.charge(header, "b", (head if n == 0 else []) + per_value[0])
+                else:                       # each value is compared only if the ones before it failed
+                    self.charge(header, "b", head if n == 0 else [])
+                    self.code.charge_each(header, per_value)
+                _, body_last = self.block(item.body)
+                self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
+            if other is not None:
+                self.code.comments_before(other.pos.line)
+                if items:
+                    self.code.line("else:", other.pos.line)
+                    _, body_last = self.block(other.body)
+                else:
+                    self.charge(self.emit("pass", other), "b", head)
+                    body_last = self.statement_list(other.body)
+                self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
+            elif header is not None:
+                self.charge(header, "e", [jump_op(self.T, "CASE_DONE")])
+        finally:
+            if self.loops:
+                self.loops[-1].cases -= 1
+        return first, top or body_last
+
+    def case_jumps(self, items, other) -> dict:
+        """For each case value: is its jump to the branch body the two-byte form (farther than 63 bytes)?
+
+        Layout (compiler/stmts.py): all compares, the OTHER body and CASE_DONE,
+        then each branch body followed by CASE_DONE.
+        """
+        compares = []                       # (value node, item index, bytes)
+        for k, item in enumerate(items):
+            for v in item.values:
+                exprs = [v.low, v.high] if isinstance(v, A.Range) else [v]
+                size = sum(self.size(lambda e=e: self.mc.expr(e)) for e in exprs) + 2
+                compares.append((v, k, size))
+        bodies = [self.body_size(item.body) + 1 for item in items]
+        other_size = (self.body_size(other.body) if other is not None else 0) + 1
+        result = {}
+        for i, (v, k, _size) in enumerate(compares):
+            after = sum(c[2] for c in compares[i + 1:]) + other_size + sum(bodies[:k])
+            result[id(v)] = after > 63
+        return result
+
+    def statement_list(self, stmts):
+        last = None
+        for s in stmts:
+            _, last = self.statement(s)
+        return last
+
+_CALL = re.compile(r"\bself\.(?!(?:addr|at|string|object_base)\()\w+(?:\[[^\]]*\])?(?:\.\w+)*\(|"
+                   r"\bspin\.(?:trap|cognew|coginit|lock\w+)\(")
+
+
+def _has_call(text: str) -> bool:
+    """Does a translated expression call a method (so that Spin's evaluation order matters)?"""
+    return bool(_CALL.search(text))
+
+
+def needs_hub_frame(method) -> bool:
+    """Does ``method`` need its locals in hub RAM (a local array, ``@local``, ``local[i]``, ``local.byte``)?"""
+    from .program import _walk
+    if any(loc.count is not None for loc in method.locals):
+        return True
+    names = {key(p) for p, _ in method.params} | {key(loc.name) for loc in method.locals} | {"result"}
+    if method.result:
+        names.add(key(method.result))
+
+    def local_ref(t):
+        return isinstance(t, A.ResultRef) or (isinstance(t, A.NameRef) and key(t.name) in names)
+
+    for n in _walk(method.body):
+        if isinstance(n, A.AddrOf) and local_ref(n.target.expr if isinstance(n.target, A.Paren) else n.target):
+            return True
+        if isinstance(n, (A.NameRef, A.ResultRef)) and n.index is not None and local_ref(n):
+            return True
+        if isinstance(n, A.MemberRef) and local_ref(n.base):
+            return True
+    return False
+
+
+class _Given(A.Expr):
+    """An already translated operand (used to reuse operator translation)."""
+
+    def __init__(self, pos, x):
+        self.pos = pos
+        self.x = x

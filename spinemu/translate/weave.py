@@ -1,0 +1,162 @@
+"""Weaving the cycle charges into a translated class, and loading translated modules.
+
+A generated module reads as plain Python; its cycle costs sit in one table
+at its end, ``SPIN_CYCLES = {line: (before, after, else)}``.  When a class
+first runs (:func:`prepare`), its methods are parsed from the module's own
+source, a charge is inserted before or after the statement on each listed
+line (``else`` charges go into the ``else:`` of an ``if``, ``while`` or ``for``,
+created if missing: a taken branch, a loop's exit), and the methods are
+compiled again from that tree, keeping the module's line numbers for
+tracebacks.  This is how pytest rewrites ``assert`` statements: the file you
+read is the file that runs, plus bookkeeping that does not change what it
+computes.
+
+Each charge is ``(aligned, extra)``: ``aligned`` cycles charged with a
+bytecode fetch's hub alignment (:func:`spinemu.translate.runtime.tick`),
+``extra`` cycles without (:func:`~spinemu.translate.runtime.add`).
+"""
+from __future__ import annotations
+
+import ast
+import importlib.util
+import inspect
+import os
+import sys
+
+from . import runtime, spin
+
+__all__ = ["prepare", "load_package"]
+
+_TICK, _TICK_AT, _TICK_READ, _ADD = "__spin_tick", "__spin_tick_at", "__spin_tick_read", "__spin_add"
+
+
+def _call(name, args, anchor):
+    call = ast.Expr(ast.Call(ast.Name(name, ast.Load()), [ast.Constant(a) for a in args], []))
+    return ast.fix_missing_locations(ast.copy_location(call, anchor))
+
+
+def _charge_stmts(charge, anchor) -> list:
+    if charge is None:
+        return []
+    aligned, extra = charge[0], charge[1]
+    out = []
+    if extra:                   # belongs to the last bytecode already paid for: first
+        out.append(_call(_ADD, (extra,), anchor))
+    if len(charge) > 3:
+        access = charge[2][0] if isinstance(charge[2], (tuple, list)) else charge[2]
+        out.append(_call(_TICK_READ, (aligned, access, charge[3]), anchor))
+    elif aligned is not None:
+        if len(charge) > 2:
+            access = tuple(charge[2]) if isinstance(charge[2], (tuple, list)) else (charge[2],)
+            out.append(_call(_TICK_AT, (aligned, *access), anchor))
+        else:
+            out.append(_call(_TICK, (aligned,), anchor))
+    return out
+
+
+def _weave_body(stmts: list, table: dict) -> list:
+    out = []
+    for s in stmts:
+        for field in ("body", "orelse", "finalbody"):
+            if isinstance(getattr(s, field, None), list) and not isinstance(s, ast.FunctionDef):
+                setattr(s, field, _weave_body(getattr(s, field), table))
+        if isinstance(s, ast.Try):
+            for h in s.handlers:
+                h.body = _weave_body(h.body, table)
+        row = table.get(s.lineno)
+        if row is None:
+            out.append(s)
+            continue
+        before, after, other = row[:3]
+        post = row[4] if len(row) > 4 else None
+        if len(row) > 3 and isinstance(s, ast.If) and isinstance(s.test, ast.BoolOp) \
+                and isinstance(s.test.op, ast.Or) and len(s.test.values) == len(row[3]):
+            # one charge before each alternative: ``if tick(a) or x == 1 or tick(b) or x == 2:``
+            values = []
+            for charge, value in zip(row[3], s.test.values):
+                values += [c.value for c in _charge_stmts(charge, s)] + [value]
+            s.test = ast.copy_location(ast.BoolOp(ast.Or(), values), s.test)
+        elif len(row) > 3 and isinstance(s, ast.While):
+            # charged each time the loop's condition is evaluated: ``while tick(...) or cond:``
+            charge = _charge_stmts(row[3], s)
+            s.test = ast.copy_location(ast.BoolOp(ast.Or(), [c.value for c in charge] + [s.test]), s.test)
+        out.extend(_charge_stmts(before, s))
+        if post is not None and isinstance(s, (ast.Return, ast.Raise, ast.Assign, ast.AugAssign)) and \
+                getattr(s, "exc" if isinstance(s, ast.Raise) else "value", None) is not None:
+            # paid once the value is computed, before it is stored or returned:
+            # ``value = ...; tick(); x = value`` (a store after the run's end does not happen)
+            field = "exc" if isinstance(s, ast.Raise) else "value"
+            keep = ast.copy_location(ast.Assign([ast.Name("__spin_value", ast.Store())], getattr(s, field)), s)
+            out.append(ast.fix_missing_locations(keep))
+            out.extend(_charge_stmts(post, s))
+            setattr(s, field, ast.copy_location(ast.Name("__spin_value", ast.Load()), s))
+            out.append(ast.fix_missing_locations(s))
+            out.extend(_charge_stmts(after, s))
+            continue
+        out.append(s)
+        if other is not None and isinstance(s, (ast.If, ast.While, ast.For)):
+            s.orelse = _charge_stmts(other, s) + s.orelse
+        out.extend(_charge_stmts(post, s))
+        out.extend(_charge_stmts(after, s))
+    return out
+
+
+def _weave_function(fn: ast.FunctionDef, table: dict) -> ast.FunctionDef:
+    fn.body = _weave_body(fn.body, table)
+    row = table.get(fn.lineno)
+    if row is not None and row[1] is not None:
+        fn.body.extend(_charge_stmts(row[1], fn.body[-1]))
+    return fn
+
+
+def prepare(cls) -> None:
+    """Weave the cycle charges into ``cls`` (a translated class) and its child classes, once."""
+    if cls.__dict__.get("_spin_woven"):
+        return
+    module = sys.modules[cls.__module__]
+    table = getattr(module, "SPIN_CYCLES", {})
+    source = inspect.getsource(module)
+    tree = ast.parse(source, filename=module.__file__)
+    module.__dict__[_TICK] = runtime.tick
+    module.__dict__[_TICK_AT] = runtime.tick_at
+    module.__dict__[_TICK_READ] = runtime.tick_read
+    module.__dict__[_ADD] = runtime.add
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef) and node.name == cls.__name__:
+            for item in node.body:
+                if isinstance(item, ast.FunctionDef):
+                    fn = _weave_function(item, table)
+                    code = compile(ast.Module([fn], []), module.__file__, "exec")
+                    ns: dict = {}
+                    exec(code, module.__dict__, ns)    # defines the woven function (no user strings)
+                    setattr(cls, item.name, ns[item.name])
+    cls._spin_woven = True
+    for value in vars(cls).values():
+        if isinstance(value, spin.Child):
+            prepare(value.cls)
+
+
+_loaded = 0
+
+
+def load_package(out_dir):
+    """Import the generated modules in ``out_dir`` as a fresh package; returns the package module.
+
+    Its ``TOP`` is the top object's class; each module is importable as
+    ``package.<module>`` (``importlib.import_module(package.__name__ + ".stepper")``).
+    """
+    out_dir = os.fspath(out_dir)
+    global _loaded
+    _loaded += 1
+    name = f"spinemu_translated_{_loaded}"
+    init = os.path.join(out_dir, "__init__.py")
+    spec = importlib.util.spec_from_file_location(name, init, submodule_search_locations=[out_dir])
+    package = importlib.util.module_from_spec(spec)
+    sys.modules[name] = package
+    spec.loader.exec_module(package)
+    return package
+
+
+def import_module(package, module: str):
+    """Import ``package.module`` (a generated module)."""
+    return importlib.import_module(f"{package.__name__}.{module}")

@@ -1,0 +1,81 @@
+"""Running a Spin program on both engines and comparing what they leave (shared by the tests and the benchmark).
+
+The bytecode engine is the reference.  Two runs agree when:
+
+* the pin traces go through the same states (``compare_traces``), with a
+  worst timing error of at most 2 % (and we report the largest offset in
+  cycles, usually 0);
+* hub RAM is identical except each Spin cog's stack: from the cog's return
+  frame (8 bytes below its first frame) up to four longs past the highest
+  stack pointer the bytecode interpreter reached (RUN and the assignment
+  operators leave scratch values just above it), and at least what the RUN
+  bytecode wrote for a ``cognew`` (frame, arguments, the new cog's
+  interpreter words).  The Python engine keeps locals, parameters and
+  expression values in Python, so those bytes are dead scratch it does not
+  write; everything else (VAR, DAT, the image, free RAM, other cogs'
+  data) must match byte for byte.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from spinemu.analysis.compare import compare_traces
+from spinemu.chip import Chip
+from spinemu.compiler import compile_file
+from spinemu import translate
+
+
+@dataclass
+class Agreement:
+    comparison: object
+    hub_differences: list
+    bytecode: object
+    python: object
+
+    @property
+    def ok(self) -> bool:
+        return self.comparison.identical and self.comparison.worst_error <= 0.02 and not self.hub_differences
+
+    def describe(self) -> str:
+        lines = [self.comparison.render()]
+        if self.hub_differences:
+            shown = ", ".join(f"${a:04X}: {b} vs {p}" for a, b, p in self.hub_differences[:8])
+            lines.append(f"hub RAM differs outside the stacks at {len(self.hub_differences)} bytes: {shown}")
+        return "\n".join(lines)
+
+
+def run_bytecode(src: str, max_cycles: int):
+    """The bytecode engine's run and each cog's stack high-water mark."""
+    prog = compile_file(src)
+    chip = Chip(prog.binary)
+    high = {}
+
+    def watch(handler):
+        def run(c, op, tf):
+            rest = handler(c, op, tf)
+            if c.sp > high.get(c.id, 0):
+                high[c.id] = c.sp
+            return rest
+        return run
+
+    chip.handlers[:] = [watch(h) for h in chip.handlers]
+    return chip.run(max_cycles), high
+
+
+def stack_bytes(python_result, high: dict) -> set:
+    """Hub addresses allowed to differ (see the module docstring)."""
+    allowed = set()
+    for cog, first, end in python_result.stats["stacks"]:
+        allowed.update(range(first, max(end, high.get(cog, first) + 16)))
+    return allowed
+
+
+def crosscheck(src: str, max_cycles: int) -> Agreement:
+    """Run ``src`` on both engines for ``max_cycles`` and compare."""
+    python = translate.run_translated(src, max_cycles=max_cycles)
+    bytecode, high = run_bytecode(src, max_cycles)
+    cmp = compare_traces(bytecode.trace, python.trace, slack=0, tolerance=0.02)
+    allowed = stack_bytes(python, high)
+    diffs = [(a, bytecode.hub[a], python.hub[a]) for a in range(len(bytecode.hub))
+             if bytecode.hub[a] != python.hub[a] and a not in allowed]
+    return Agreement(cmp, diffs, bytecode, python)
