@@ -78,13 +78,14 @@ def compile_spin(path, include_dirs=()):
 
 
 def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] = None,
-             compat: str = "chip", inputs=None, include_dirs=()):
+             compat: str = "spinsim", inputs=None, include_dirs=()):
     """Compile (if ``target`` is a ``.spin`` file) and run a Propeller program.
 
     Args:
         target: a ``.spin`` source, a ``.binary``/``.eeprom`` file, or image bytes.
         cycles, seconds: where to stop (default: when every cog has stopped).
-        compat: ``"chip"`` (model the chip) or ``"spinsim"`` (the reference simulator's shortcuts).
+        compat: ``"spinsim"`` (default: the reference simulator, cycle for cycle) or ``"chip"``
+            (the silicon's cog load time, lock numbering and hub windows; see docs/timing.md).
         inputs: what undriven pins read (``"pulldown"``, ``"pullup"`` or a stimulus).
         include_dirs: OBJ search folders for a ``.spin`` target.
 

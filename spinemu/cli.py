@@ -200,15 +200,20 @@ def _spin_inputs(args, clock_hz: int):
     """The chip's input model: the pull mode, plus any --input waveforms on top."""
     stim = _parse_stimulus(args.stimulus, 32)
     if not stim:
-        return args.inputs
+        return args.inputs              # None: the compat mode's own default
     from .chip.inputs import PinStimulus
 
-    base = 0xFFFFFFFF if args.inputs == "pullup" else 0
+    pull = args.inputs or ("pullup" if _compat(args) == "spinsim" else "pulldown")
+    base = 0xFFFFFFFF if pull == "pullup" else 0
     changes = []
     for pin, value in stim.items():
         for seconds, level in ([(0.0, value)] if isinstance(value, int) else value):
             changes.append((int(round(seconds * clock_hz)), 1 << pin, level << pin))
     return PinStimulus(changes, initial=base)
+
+
+def _compat(args) -> str:
+    return args.compat or "spinsim"
 
 
 def _run_limit(args, clock_hz: int) -> Optional[int]:
@@ -264,11 +269,11 @@ def cmd_run(args, out: _Out) -> int:
         from .translate import run_translated
 
         result = run_translated(args.target, include_dirs=list(args.include or ()), max_cycles=limit,
-                                compat=args.compat, inputs=_spin_inputs(args, clock))
+                                compat=_compat(args), inputs=_spin_inputs(args, clock))
     else:
         from .chip import Chip
 
-        chip = Chip(image, compat=args.compat, inputs=_spin_inputs(args, clock), source_map=source_map)
+        chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map)
         progress, update = _progress_callback(out, limit, clock, not args.no_progress)
         if progress is not None:
             with progress:
@@ -302,8 +307,8 @@ _PBASIC_REASONS = {"end": "END statement", "stop": "STOP statement", "time": "ti
 def _run_pbasic(args, out: _Out) -> int:
     from .pbasic import run_file
 
-    if args.engine == "python" or args.compat != "chip":
-        raise UsageError("--engine and --compat apply to Spin programs only")
+    if args.engine == "python" or args.compat is not None or args.inputs is not None:
+        raise UsageError("--engine, --compat and --inputs apply to Spin programs only")
     if args.cycles is not None:
         raise UsageError("BASIC Stamp runs are limited with --seconds (the BS2 has no system counter)")
     if not os.path.exists(args.target):
@@ -481,10 +486,13 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--dump-hub", metavar="FILE", help="write the 32 KB hub RAM at the end of the run")
     r.add_argument("-L", "-I", dest="include", action="append", metavar="DIR", help="OBJ search folder")
     r.add_argument("-D", dest="define", action="append", metavar="NAME", help="define NAME for #ifdef")
-    r.add_argument("--compat", choices=["chip", "spinsim"], default="chip",
-                   help="chip: model the real chip (default); spinsim: reproduce the reference simulator's shortcuts")
-    r.add_argument("--inputs", choices=["pulldown", "pullup"], default="pulldown",
-                   help="what pins nobody drives read as (default: pulldown)")
+    r.add_argument("--compat", choices=["spinsim", "chip"],
+                   help="spinsim (default): Parallax's ROM interpreter as the cycle-exact reference simulator runs "
+                        "it, cycle for cycle; chip: the silicon where it differs (a new cog loads for 7,952 "
+                        "cycles, lock 0 first, one hub window per cog); see docs/timing.md")
+    r.add_argument("--inputs", choices=["pulldown", "pullup"],
+                   help="what pins nobody drives read as (default: pullup with --compat spinsim, as the "
+                        "reference reads them; pulldown with --compat chip)")
     r.add_argument("--input", dest="stimulus", metavar="SPEC",
                    help="drive input pins: 'P3=1' holds P3 high; 'P5=0@0,1@0.25' sets P5 low at 0 s and high at "
                         "0.25 s; several pins separated by ';'")

@@ -12,15 +12,18 @@ in which every cog waits.  Pins are in :mod:`.pins`, the interpreter in
 
 Two compatibility modes (``compat``):
 
-``"chip"`` (default)
-    The real chip: a started cog first loads 496 longs (``COG_LOAD_CYCLES``),
-    ``LOCKNEW`` hands out lock 0 first, a restarted cog's DIRA/OUTA are
-    cleared, undriven pins read 0 unless ``inputs`` says otherwise, and each
-    cog's hub window is 2 clocks later than the previous cog's.
-``"spinsim"``
-    What spinsim 0.99 (the simulator behind tests/data/article) does: a cog
-    starts 4 cycles after the COGINIT, lock 1 comes first, DIRA/OUTA survive a
-    restart, undriven pins read 1, all cogs share one hub phase.
+``"spinsim"`` (default)
+    The reference: what spinsim 0.99 (Parallax's ROM interpreter on
+    cycle-exact cogs, the simulator behind the reference traces in
+    tests/data/article) does, cycle for cycle: a cog starts 4 cycles after
+    the COGINIT, lock 1 comes first, DIRA/OUTA survive a restart, undriven
+    pins read 1, all cogs share one hub phase.
+``"chip"``
+    The silicon where it differs from that simulator: a started cog first
+    loads 496 longs (``COG_LOAD_CYCLES``), ``LOCKNEW`` hands out lock 0 first,
+    a restarted cog's DIRA/OUTA are cleared, undriven pins read 0 unless
+    ``inputs`` says otherwise, and each cog's hub window is 2 clocks later
+    than the previous cog's.
 
 Hot paths are in :mod:`.scheduler` and :mod:`.spin`; this module is set-up,
 cog and lock management, and the run's result.
@@ -85,7 +88,7 @@ class Chip(Pins, Scheduler):
 
     Args:
         image: the bytes of a ``.binary`` or ``.eeprom`` image.
-        compat: ``"chip"`` or ``"spinsim"`` (see the module docstring).
+        compat: ``"spinsim"`` (default) or ``"chip"`` (see the module docstring).
         inputs: what pins nobody drives read: ``"pullup"``, ``"pulldown"``, or
             a stimulus (see :mod:`spinemu.chip.inputs`).  Default: pull-down
             in chip mode, pull-up in spinsim mode (spinsim reads them as 1).
@@ -99,7 +102,7 @@ class Chip(Pins, Scheduler):
 
     """
 
-    def __init__(self, image: bytes, *, compat: str = "chip", inputs=None,
+    def __init__(self, image: bytes, *, compat: str = "spinsim", inputs=None,
                  source_map: Optional[Callable] = None, fast_forward: bool = True,
                  timing: Optional[Timing] = None, compile_blocks: bool = True):
         if compat not in COMPAT_MODES:

@@ -68,7 +68,7 @@ def translate_file(src_path, out_dir, include_dirs=()) -> list[str]:
     return _write(modules, compiled, os.fspath(out_dir))
 
 
-def run_package(package, max_cycles=None, compat: str = "chip", inputs=None):
+def run_package(package, max_cycles=None, compat: str = "spinsim", inputs=None):
     """Run a package written by :func:`translate_file` (imported, e.g. with :func:`load_package`) on a chip.
 
     Returns:
@@ -81,7 +81,7 @@ def run_package(package, max_cycles=None, compat: str = "chip", inputs=None):
     return run_class(package.TOP, image, max_cycles=max_cycles, compat=compat, inputs=inputs)
 
 
-def run_translated(src_path, include_dirs=(), max_cycles=None, compat: str = "chip", inputs=None):
+def run_translated(src_path, include_dirs=(), max_cycles=None, compat: str = "spinsim", inputs=None):
     """Translate ``src_path`` and run the Python on the chip model.
 
     Args:

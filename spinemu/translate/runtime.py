@@ -27,7 +27,7 @@ from ..chip.chip import Chip
 from ..chip.cog import PIN_WAIT, STOPPED
 from ..chip.control import Reschedule
 from ..chip.rom import INTERPRETER_ENTRY
-from ..chip.timing import MATH_REF, load_timing
+from ..chip.timing import MATH_REF, access_offsets, load_timing
 from . import spin
 from .costs import drop_result_delta
 from .spin import RT, Abort
@@ -35,6 +35,7 @@ from .spin import RT, Abort
 __all__ = ["PythonChip", "Engine", "instantiate", "run_class", "tick", "tick_at", "tick_read", "add"]
 
 _NEVER = 1 << 62
+_ACCESS = access_offsets()
 _SPINSIM_START = -4
 
 
@@ -163,6 +164,20 @@ class Engine:
                                         "(Python's recursion limit)") from None
 
     # ---------------------------------------------------------------- cog side (called by spin.*)
+    def _fetched_in_turn(self, access: int) -> int:
+        """The fetch cycle of a bytecode whose shared access (pins, another cog) is ``access`` cycles after it.
+
+        Statements pay the bytecodes before a wait or a cog start/stop without
+        that bytecode; before it acts, the cog lets every other cog whose
+        access comes earlier go first, as the bytecode engine's scheduler does.
+        """
+        c = RT.cog
+        tf = spin._fetched()
+        if tf + access >= RT.limit:
+            RT.keys[c.id] = tf + access
+            self.pause()
+        return tf
+
     def waitcnt(self, target: int) -> None:
         c, T = RT.cog, self.T
         tf = spin._fetched()
@@ -177,7 +192,7 @@ class Engine:
 
     def wait_pins(self, state: int, mask: int, equal: bool) -> None:
         c = RT.cog
-        tf = spin._fetched()
+        tf = self._fetched_in_turn(_ACCESS[0x1B])
         try:
             c.t = tf + self.chip.wait_pins(c, mask & 0xFFFFFFFF, state & 0xFFFFFFFF, equal, tf)
         except Reschedule:
@@ -187,7 +202,7 @@ class Engine:
     def coginit(self, cog_id: int, method, args, stack: int) -> int:
         """COGINIT/COGNEW of a translated method: what RUN and COGINIT do on the chip."""
         chip, c = self.chip, RT.cog
-        tf = spin._fetched()
+        tf = self._fetched_in_turn(_ACCESS[0x2C])
         RT.limit = -1           # the scheduler must look again (the bytecode engine reschedules too)
         if not callable(method):                        # PASM: cognew(@code, par)
             par = args[0] if args else stack
@@ -199,7 +214,7 @@ class Engine:
     def cogstop(self, cog_id: int) -> None:
         """COGSTOP: the target stops when the bytecode's hub instruction runs."""
         chip, c = self.chip, RT.cog
-        t = spin._fetched() + self.T.cogstop_at
+        t = self._fetched_in_turn(_ACCESS[0x21]) + self.T.cogstop_at
         target = chip.cogs[cog_id]
         if target is c:
             chip.stop_cog(c, t, "COGSTOP of itself")
@@ -276,7 +291,7 @@ def _children_of(cls):
     return [(k, v) for k, v in vars(cls).items() if isinstance(v, spin.Child)]
 
 
-def run_class(cls, image: bytes, *, max_cycles=None, compat: str = "chip", inputs=None):
+def run_class(cls, image: bytes, *, max_cycles=None, compat: str = "spinsim", inputs=None):
     """Run translated top class ``cls`` on a :class:`PythonChip` loaded with ``image``."""
     from ..image import ImageHeader, load_image
     from .weave import prepare
@@ -308,7 +323,7 @@ class PythonChip(Chip):
         compat, inputs: as for :class:`~spinemu.chip.Chip`.
     """
 
-    def __init__(self, image: bytes, top, epilogue: int, *, compat: str = "chip", inputs=None):
+    def __init__(self, image: bytes, top, epilogue: int, *, compat: str = "spinsim", inputs=None):
         super().__init__(image, compat=compat, inputs=inputs, fast_forward=False)
         self.top = top
         self.engine = Engine(self, epilogue)

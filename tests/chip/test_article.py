@@ -58,7 +58,7 @@ def test_simple_stepper_runs_for_the_requested_cycles(spinsim_runs):
 
 @pytest.mark.parametrize("name", sorted(RUNS))
 def test_chip_mode_matches_the_reference_within_the_comparison_rules(name):
-    result = Chip(article_image(name)).run(max_cycles=RUNS[name])
+    result = Chip(article_image(name), compat="chip").run(max_cycles=RUNS[name])
     ref, cand = reference(name), trace_states(result.trace.changes)
     if name != "as_printed_simple_stepper":
         # the chip's cog load delay swaps the first two changes (see module docstring)

@@ -38,7 +38,7 @@ def test_locknew_hands_out_locks_in_the_order_of_the_mode(compat, expected):
 
 
 def test_cog_reuse_clears_dira_and_outa_in_chip_mode():
-    result = Chip(image("cog_reuse")).run()
+    result = Chip(image("cog_reuse"), compat="chip").run()
     starts = [e[0] for e in result.cog_events if e[1] == 1 and e[2] == "start"]
     assert len(starts) == 2
     # pin 5 is driven by the first run of cog 1 only
@@ -53,7 +53,7 @@ def test_cog_reuse_keeps_dira_and_outa_in_spinsim_mode():
 
 def test_a_new_cog_loads_for_about_8000_cycles_in_chip_mode_and_4_in_spinsim_mode():
     img = image("cog_reuse")
-    chip = Chip(img).run().cog_events
+    chip = Chip(img, compat="chip").run().cog_events
     sim = Chip(img, compat="spinsim").run().cog_events
     first = lambda ev: next(e[0] for e in ev if e[1] == 1)   # noqa: E731
     assert first(chip) - first(sim) == 496 * 16 + 16 + 4
@@ -73,8 +73,9 @@ def test_undriven_pins_read_as_the_input_model_says():
     assert Chip(img, inputs="pullup").run().trace.changes[-2][1] == 1        # passes at once
     low = Chip(img, inputs="pulldown").run(max_cycles=5_000_000)
     assert low.reason == "cycle limit" and low.trace.changes == [(0, 0, 0)]
-    assert Chip(img).run().reason == "deadlock"                             # nothing can ever change pin 3
+    assert Chip(img, compat="chip").run().reason == "deadlock"              # nothing can ever change pin 3
     assert Chip(img, compat="spinsim").run().reason == "all cogs stopped"  # spinsim reads 1
+    assert Chip(img).run().reason == "all cogs stopped"                     # the default is spinsim's
 
 
 def test_a_pin_stimulus_wakes_waitpeq_at_its_edge():
@@ -202,6 +203,9 @@ def test_a_cog_whose_engine_is_an_object_is_run_by_that_engine():
     calls = []
 
     class Engine:
+        def key(self, c):               # when the cog next touches shared state
+            return c.t
+
         def run(self, c, until):
             calls.append((c.id, c.t, until))
             c.t += 1_000

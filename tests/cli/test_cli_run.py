@@ -53,14 +53,28 @@ def test_a_missing_object_file_is_reported_at_the_obj_line(tmp_path):
     assert code == 1 and err.startswith(f"{src}:2:") and "nowhere" in err
 
 
-def test_run_of_the_column_demo_matches_the_reference_in_spinsim_mode(tmp_path):
+def test_run_of_the_column_demo_matches_the_reference_by_default(tmp_path):
     log = tmp_path / "demo.log"
-    code, out, err = run("run", SRC / "corrected" / "stepper_demo.spin", "--compat", "spinsim",
-                         "--trace", log, "--no-progress")
+    code, out, err = run("run", SRC / "corrected" / "stepper_demo.spin", "--trace", log, "--no-progress")
     assert code == 0, err
     assert "all cogs stopped" in out and "2 started, 2 stopped" in out
     code, out, _ = run("trace", "compare", DATA / "corrected_stepper_demo.trace", log)
     assert code == 0 and "largest offset 0 cycles" in out
+
+
+def test_run_in_chip_mode_loads_the_new_cog_first(tmp_path):
+    # the silicon spends 7,952 cycles loading the stepper cog: P0 is driven before P1..P4
+    log = tmp_path / "demo.log"
+    code, _, err = run("run", SRC / "corrected" / "stepper_demo.spin", "--compat", "chip", "--seconds", "0.01",
+                       "--trace", log, "--no-progress")
+    assert code == 0, err
+    changes = read_log(log.read_text()).changes
+    assert [(d, o) for _, d, o in changes[1:3]] == [(0x01, 0), (0x1F, 0)]
+
+
+def test_compat_and_inputs_are_refused_for_a_basic_stamp_program():
+    code, _, err = run("run", SRC / "bs2" / "stepper_bs2.bs2", "--inputs", "pullup")
+    assert code == 2 and "Spin programs only" in err
 
 
 def test_run_of_a_binary_image_with_a_cycle_limit(tmp_path):

@@ -44,10 +44,10 @@ class Agreement:
         return "\n".join(lines)
 
 
-def run_bytecode(src: str, max_cycles: int):
+def run_bytecode(src: str, max_cycles: int, compat: str = "spinsim"):
     """The bytecode engine's run and each cog's stack high-water mark."""
     prog = compile_file(src)
-    chip = Chip(prog.binary)
+    chip = Chip(prog.binary, compat=compat)
     high = {}
 
     def watch(handler):
@@ -70,10 +70,10 @@ def stack_bytes(python_result, high: dict) -> set:
     return allowed
 
 
-def crosscheck(src: str, max_cycles: int) -> Agreement:
-    """Run ``src`` on both engines for ``max_cycles`` and compare."""
-    python = translate.run_translated(src, max_cycles=max_cycles)
-    bytecode, high = run_bytecode(src, max_cycles)
+def crosscheck(src: str, max_cycles: int, compat: str = "spinsim") -> Agreement:
+    """Run ``src`` on both engines for ``max_cycles`` in compat mode ``compat`` and compare."""
+    python = translate.run_translated(src, max_cycles=max_cycles, compat=compat)
+    bytecode, high = run_bytecode(src, max_cycles, compat)
     cmp = compare_traces(bytecode.trace, python.trace, slack=0, tolerance=0.02)
     allowed = stack_bytes(python, high)
     diffs = [(a, bytecode.hub[a], python.hub[a]) for a in range(len(bytecode.hub))
