@@ -19,6 +19,7 @@ a call of :mod:`spinemu.translate.spin` where it does not (``/`` is
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from ..frontend import ast as A
@@ -62,20 +63,31 @@ def _signed(v: int) -> int:
 
 
 def number_text(node) -> str:
-    """A Spin number literal as Python writes it (``%0011`` -> ``0b0011``, ``$FF`` -> ``0xFF``)."""
+    """A Spin number literal as Python writes it (``%0011`` -> ``0b0011``, ``$FF`` -> ``0xFF``).
+
+    Spin allows what Python does not (``%0111__0000``, ``$_FF_``): runs of
+    underscores become one; a spelling Python would still refuse, or read as
+    another value, is written as the decimal value.
+    """
     v = _signed(node.value)
-    t = node.text.strip().rstrip("_")
+    t = re.sub("_+", "_", node.text.strip()).rstrip("_")
     if v != node.value or not t:
         return str(v)
     if t.startswith("%%"):
         return str(v)
     if t.startswith("%"):
-        return "0b" + t[1:].lstrip("_")
-    if t.startswith("$"):
-        return "0x" + t[1:].lstrip("_")
-    if t.replace("_", "").isdigit():
+        t = "0b" + t[1:].lstrip("_")
+    elif t.startswith("$"):
+        t = "0x" + t[1:].lstrip("_")
+    elif t.replace("_", "").isdigit():
         t = t.lstrip("0_") or "0"           # Python has no leading zeros in decimals
-        return t if not t.endswith("_") else str(v)
+    else:
+        return str(v)
+    try:
+        if int(t, 0) == v:
+            return t
+    except ValueError:
+        pass
     return str(v)
 
 
