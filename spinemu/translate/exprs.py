@@ -20,7 +20,7 @@ a call of :mod:`spinemu.translate.spin` where it does not (``/`` is
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 from ..frontend import ast as A
 from ..frontend.constants import float_bits
@@ -298,6 +298,13 @@ class ExprTranslator:
         if op in _CMP:
             return X(f"{self.wrapped(left).paren(5)} {_CMP[op]} {self.wrapped(right).paren(5)}", 4, boolean=True)
         if op in ("AND", "OR"):
+            if self.has_effects(node.right):
+                # Spin evaluates both operands (no short cut): `ok := start_a and start_b` calls both
+                sym = "&" if op == "AND" else "|"
+                p = PREC[sym]
+                lt = left.paren(p + 1) if left.boolean else f"bool({left.text})"
+                rt = right.paren(p + 1) if right.boolean else f"bool({right.text})"
+                return X(f"{lt} {sym} {rt}", p, boolean=True)
             word = op.lower()
             lp, rp = PREC[word], PREC[word] + 1
             lt = left.paren(lp) if left.boolean else self.wrapped(left).paren(lp)
@@ -325,6 +332,20 @@ class ExprTranslator:
         if op in _HELPER_BIN:
             return X(f"{_HELPER_BIN[op]}({left.text}, {right.text})")
         self.unsupported(f"the operator {node.op}", node)
+
+    def has_effects(self, node) -> bool:
+        """Does evaluating ``node`` change anything (a method call, an assignment, ``x++``, a lock or cog built-in)?"""
+        if isinstance(node, _EFFECTS):
+            return True
+        if isinstance(node, A.Builtin) and node.name not in _PURE_BUILTINS:
+            return True
+        if isinstance(node, A.NameRef):             # a method called without parentheses
+            return self.lookup(node.name, node)[0] == "method"
+        if isinstance(node, A.Node):
+            return any(self.has_effects(getattr(node, f.name)) for f in fields(node) if f.name != "pos")
+        if isinstance(node, (list, tuple)):
+            return any(self.has_effects(n) for n in node)
+        return False
 
     def value_x(self, x: X) -> str:
         return self.wrapped(x).text
@@ -451,6 +472,12 @@ class ExprTranslator:
 
     def x_Range(self, node):
         self.unsupported("a range outside case or lookup", node)
+
+
+#: built-ins without side effects (reading them twice or not at all changes nothing)
+_PURE_BUILTINS = {"constant", "float", "round", "trunc", "string", "strsize", "strcomp", "cogid",
+                  "clkfreq", "clkmode", "chipver"}
+_EFFECTS = (A.Call, A.ObjCall, A.Assign, A.PreOp, A.PostOp, A.AbortTrap)
 
 
 def _is_plain(x: X) -> bool:
