@@ -68,6 +68,8 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.pending_lookups: list = []
         self.exits: set = set()             # lines that leave their block (return, raise, break, continue)
         self.last_data = b""
+        #: stack bytes the enclosing statements keep while this one runs (a repeat count: 4, a case: 8)
+        self.held = 0
         self.cur_pos = method.pos
         self.path = method.pos.path
 
@@ -127,10 +129,10 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
     def note_depths(self, lines) -> None:
         """Record the stack bytes in use at the first call of the piece compiled last, for ``lines``."""
         depths = call_depths(self.last_data, self.nparams)
-        if depths and depths[0]:
+        if depths and depths[0] + self.held:
             for line in lines:
                 if line is not None:
-                    self.code.call_depths[line] = depths[0]
+                    self.code.call_depths[line] = depths[0] + self.held
 
     def size(self, fn) -> int:
         mc = self.mc
@@ -175,6 +177,8 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
     # ------------------------------------------------------------------ emitting
     def emit(self, text: str, node=None) -> int:
         line = self.code.line(text, node.pos.line if node is not None else None)
+        if self.held:                       # a call at the start of this line: above what the enclosing statements hold
+            self.code.call_depths.setdefault(line, self.held)
         for _ in range(text.count("spin.look")):
             if self.pending_lookups:                # what each lookup item costs, for the runtime
                 costs = self.pending_lookups.pop(0)
@@ -485,6 +489,9 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         for text in pre_lines:
             ln = self.emit(text, st)
             first = first or ln
+        if first is not None:               # a call in the selector comes after CASE's end address is pushed
+            self.piece(lambda: self.mc.block([st]))
+            self.note_depths(range(first, ln + 1))
         end = self.objt.offset_of(st.pos, self.method) + self.body_size([st])
         imm = 1 if end < 0x100 else 2
         head = [Op(0x37 + imm, self.T.push_imm[imm])] + self.expr_ops(st.value)
@@ -526,16 +533,20 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                 else:                       # each value is compared only if the ones before it failed
                     self.charge(header, "b", head if n == 0 else [])
                     self.code.charge_each(header, per_value)
-                _, body_last = self.block(item.body)
+                _, body_last = self.held_block(8, item.body)
                 self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
             if other is not None:
                 self.code.comments_before(other.pos.line)
                 if items:
                     self.code.line("else:", other.pos.line)
-                    _, body_last = self.block(other.body)
+                    _, body_last = self.held_block(8, other.body)
                 else:
                     self.charge(self.emit("pass", other), "b", head)
-                    body_last = self.statement_list(other.body)
+                    self.held += 8
+                    try:
+                        body_last = self.statement_list(other.body)
+                    finally:
+                        self.held -= 8
                 self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
             elif header is not None:
                 self.charge(header, "e", [jump_op(self.T, "CASE_DONE")])
@@ -563,6 +574,14 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             after = sum(c[2] for c in compares[i + 1:]) + other_size + sum(bodies[:k])
             result[id(v)] = after > 63
         return result
+
+    def held_block(self, held: int, stmts) -> tuple:
+        """:meth:`block` for a body run while the statement around it keeps ``held`` bytes on the stack."""
+        self.held += held
+        try:
+            return self.block(stmts)
+        finally:
+            self.held -= held
 
     def statement_list(self, stmts):
         last = None
