@@ -226,10 +226,15 @@ class ExprTranslator:
     def x_SprRef(self, node) -> X:
         return X(f"cog.spr[{self.expr(node.index).text}]")
 
+    def child(self, node, index) -> str:
+        """The child object ``node.obj`` (``obj[i]``); an array named without an index is its element 0, as in Spin."""
+        obj = f"self.{self.names.attr(node.obj)}"
+        if index is not None:
+            return obj + f"[{self.value(index)}]"
+        return obj + ("[0]" if getattr(self.lookup(node.obj, node)[1], "count", 1) > 1 else "")
+
     def x_ObjConst(self, node) -> X:
-        entry = self.lookup(node.obj, node)
-        sym = entry[1]
-        obj = f"self.{self.names.attr(node.obj)}" + ("[0]" if getattr(sym, "count", 1) > 1 else "")
+        obj = self.child(node, None)
         value = self.constant(node)
         return X(f"{obj}.{self.names.child_const(node.obj, node.name)}", const=value)
 
@@ -247,9 +252,7 @@ class ExprTranslator:
         return ", ".join(self.value(a) for a in args)
 
     def x_ObjCall(self, node) -> X:
-        obj = f"self.{self.names.attr(node.obj)}"
-        if node.index is not None:
-            obj += f"[{self.value(node.index)}]"
+        obj = self.child(node, node.index)
         return X(f"{obj}.{self.names.child_method(node.obj, node.method)}({self.args(node.args)})")
 
     def x_AbortTrap(self, node) -> X:
