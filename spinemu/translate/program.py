@@ -155,8 +155,9 @@ class _StringTracker(cstmts.MethodCompiler):
 class ObjectTranslator:
     """Translates one object (one .spin file) to one module."""
 
-    def __init__(self, unit, cobj, timing, classes: dict):
+    def __init__(self, unit, cobj, timing, classes: dict, values_used: frozenset = frozenset()):
         self.unit = unit
+        self.values_used = values_used
         self.cobj = cobj
         self.timing = timing
         self.classes = classes
@@ -225,6 +226,17 @@ class ObjectTranslator:
     def uses_result(self, method) -> bool:
         names = {"result"} | ({key(method.result)} if method.result else set())
         return _mentions(method.body, names, result_ref=True)
+
+    def gives_value(self, method) -> bool:
+        """Must the Python method return a number where it falls off its end?
+
+        Spin returns RESULT (0 unless set) from every method, Python returns
+        ``None``: so a method returns 0 at its end when a call somewhere in
+        the program uses its value, or when it returns a value elsewhere
+        (consistent returns, PEP 8).
+        """
+        return (self.unit.path, key(method.name)) in self.values_used or \
+            any(isinstance(n, A.Return) and n.value is not None for n in _walk(method.body))
 
     def read_after(self, method, stmt, name: str) -> bool:
         return _count_mentions(method.body, name) > _count_mentions([stmt], name)
@@ -384,8 +396,8 @@ class ObjectTranslator:
         ret = mt.piece(lambda: mt.mc.code.emit(0x32))
         ends = m.body and isinstance(m.body[-1], (A.Return, A.Abort))
         if not ends:
-            if uses_result:
-                line = code.line(f"return {mt.result_text()}")
+            if uses_result or self.gives_value(m):
+                line = code.line(f"return {mt.result_text() if uses_result else 0}")
                 code.charge(line, "b", ret)
             elif last is None:
                 line = code.line("pass")
@@ -557,6 +569,31 @@ def _mentions(body, names: set, result_ref=False) -> bool:
     return False
 
 
+def _values_used(units) -> frozenset:
+    """``(object path, method key)`` of each method whose value a call in the program uses.
+
+    A call statement (``f(x)``, ``\\f(x)``) drops the value, as does starting
+    the method in a cog (``cognew(f(x), @stack)``); any other call uses it.
+    """
+    used = set()
+    for u in units:
+        methods = {key(m.name) for m in u.spin.methods}
+        children = {key(decl.name): child.path for decl, child in u.children}
+        dropped = set()
+        for n in _walk([m.body for m in u.spin.methods]):
+            if isinstance(n, A.ExprStmt):
+                dropped.add(id(n.expr.call if isinstance(n.expr, A.AbortTrap) else n.expr))
+            elif isinstance(n, A.Builtin) and n.name in ("cognew", "coginit") and n.args:
+                dropped.update(id(a.expr if isinstance(a, A.Paren) else a) for a in n.args)
+            elif id(n) in dropped:
+                continue
+            elif isinstance(n, A.Call) or (isinstance(n, A.NameRef) and key(n.name) in methods):
+                used.add((u.path, key(n.name)))
+            elif isinstance(n, A.ObjCall) and key(n.obj) in children:
+                used.add((children[key(n.obj)], key(n.method)))
+    return frozenset(used)
+
+
 def _count_mentions(body, name: str) -> int:
     return sum(1 for n in _walk(body) if isinstance(n, A.NameRef) and key(n.name) == name)
 
@@ -609,7 +646,9 @@ def translate_program(src_path: str, include_dirs=()):
         used.add(name)
         classes[u.path] = name
     timing = load_timing()
-    modules = [ObjectTranslator(u, _cobj_for(u, by_unit, compiled), timing, classes).translate() for u in units]
+    values_used = _values_used(units)
+    modules = [ObjectTranslator(u, _cobj_for(u, by_unit, compiled), timing, classes, values_used).translate()
+               for u in units]
     return modules, compiled
 
 

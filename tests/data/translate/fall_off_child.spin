@@ -1,0 +1,5 @@
+'' Child of fall_off_value.spin: a procedure whose value the parent uses.
+VAR
+  long stopped
+PUB stop
+  stopped := TRUE
