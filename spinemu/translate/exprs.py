@@ -150,10 +150,16 @@ class ExprTranslator:
         """The folded value of a constant expression, or None."""
         from ..frontend.constants import ConstError, NotConstant, evaluate
         try:
-            c = evaluate(node, self.obj.resolve_const, self.obj.char_bytes)
+            c = evaluate(node, self._resolve_const, self.obj.char_bytes)
         except (NotConstant, ConstError, KeyError, TypeError):
             return None
         return _signed(c.bits)
+
+    def _resolve_const(self, node):
+        """CON names and ``obj#X`` only: in a method a DAT label is a variable and ``@label`` depends on the object's address."""
+        if isinstance(node, A.AddrOf) or (isinstance(node, A.NameRef) and self.obj.const(node.name) is None):
+            return None
+        return self.obj.resolve_const(node)
 
     # ------------------------------------------------------------------ names
     def x_NameRef(self, node) -> X:
