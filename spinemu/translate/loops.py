@@ -37,14 +37,12 @@ __all__ = ["LoopTranslator"]
 
 
 class _LoopInfo:
-    """An open loop: what ``next`` and ``quit`` cost, and for loops whose test Python's
+    """An open loop: what a ``next`` costs after its jump, and for loops whose test Python's
     ``continue`` would skip, ``emit_next(lead_ops)`` writes that test before the ``continue``."""
 
-    def __init__(self, kind, next_ops=(), quit_op="JMP"):
+    def __init__(self, kind, next_ops=()):
         self.kind = kind
         self.next_ops = list(next_ops)
-        self.quit_op = quit_op
-        self.cases = 0
         self.emit_next = None
 
 
@@ -79,7 +77,7 @@ class LoopTranslator:
         T = self.T
         djnz_t, djnz_n = jump_op(T, "DJNZ", long_back, True), jump_op(T, "DJNZ", long_back, False)
         self.charge(first or line, "b", self.expr_ops(st.count) + [jump_op(T, "TJZ", size + 3 > 63, False)])
-        info = _LoopInfo("count", next_ops=[djnz_t], quit_op="JNZ")
+        info = _LoopInfo("count", next_ops=[djnz_t])
         self.held += 4                      # the count stays on the stack while the body runs
         try:
             _, last = self.loop_block(st.body, info)

@@ -212,13 +212,23 @@ class ObjectTranslator:
 
     def offset_of(self, pos, method) -> int:
         """Object offset of the first bytecode compiled for the statement at ``pos`` (else the method's start)."""
-        if self._offsets is None:
-            self._offsets = {}
-            for span in self.cobj.spans:
-                if span.pos is not None and span.data:
-                    self._offsets.setdefault((span.pos.line, span.pos.col), span.offset)
+        self._index_spans()
         found = self._offsets.get((pos.line, pos.col))
         return found if found is not None else self.infos[key(method.name)].offset
+
+    def compiled_at(self, pos) -> bytes:
+        """The bytecode the compiler made for the statement at ``pos``, at its real place (so a jump has its real size)."""
+        self._index_spans()
+        return bytes(self._bytes.get((pos.line, pos.col), b""))
+
+    def _index_spans(self) -> None:
+        if self._offsets is None:
+            self._offsets, self._bytes = {}, {}
+            for span in self.cobj.spans:
+                if span.pos is not None and span.data:
+                    at = (span.pos.line, span.pos.col)
+                    self._offsets.setdefault(at, span.offset)
+                    self._bytes.setdefault(at, bytearray()).extend(span.data)
 
     def method_end(self, method) -> int:
         return self.infos[key(method.name)].end

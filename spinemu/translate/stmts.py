@@ -28,7 +28,6 @@ from __future__ import annotations
 import re
 
 from ..compiler.code import CodeBuffer, Label
-from ..compiler.exprs import push_const_bytes
 from ..compiler import stmts as cstmts
 from ..frontend import ast as A
 from ..frontend.ast import key
@@ -292,7 +291,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
 
     def s_Next(self, st) -> tuple:
         loop = self.loop_of(st, "next")
-        ops = self.case_pops(loop) + [jump_op(self.T, "JMP")] + loop.next_ops
+        ops = self.jump_out(st) + loop.next_ops
         if loop.emit_next is not None:          # Spin's next goes to the loop's test: write it here
             first = loop.emit_next(ops)
             line = self.emit("continue", st)
@@ -304,8 +303,8 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         return line, line
 
     def s_Quit(self, st) -> tuple:
-        loop = self.loop_of(st, "quit")
-        ops = self.case_pops(loop) + [jump_op(self.T, loop.quit_op, taken=True)]
+        self.loop_of(st, "quit")
+        ops = self.jump_out(st)
         line = self.emit("break", st)
         self.charge(line, "b", ops)
         self.exits.add(line)
@@ -316,10 +315,17 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             self.unsupported(f"'{word}' outside a repeat loop", st)
         return self.loops[-1]
 
-    def case_pops(self, loop) -> list:
-        if not loop.cases:
-            return []
-        return price(self.T, push_const_bytes(8 * loop.cases) + b"\x14")
+    def jump_out(self, st) -> list:
+        """The ops of a ``next``/``quit``: the enclosing cases' pops and the jump, as the compiler made them.
+
+        The jump's size (one or two offset bytes, 16 cycles apart) depends on
+        how far the loop's end or test is, so it comes from the compiled object.
+        """
+        ops = price(self.T, self.objt.compiled_at(st.pos))
+        for i, op in enumerate(ops):
+            if op.code in (0x04, 0x0A, 0x0B):       # what follows (a case's CASE_DONE) is another statement's
+                return ops[:i + 1]
+        return ops
 
     # ------------------------------------------------------------------ assignments
     def assign(self, node) -> None:
@@ -498,61 +504,55 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         items = [it for it in st.items if it.values is not None]
         other = next((it for it in st.items if it.values is None), None)
         jump_long = self.case_jumps(items, other)
-        if self.loops:
-            self.loops[-1].cases += 1
         header = top = body_last = None
-        try:
-            for n, item in enumerate(items):
-                conds, ops, per_value = [], [], []
-                for v in item.values:
-                    ops = []
-                    if isinstance(v, A.Range):
-                        lo, hi = self.value(v.low), self.value(v.high)
-                        clo, chi = self.constant(v.low), self.constant(v.high)
-                        if clo is not None and chi is not None and clo > chi:
-                            lo, hi = hi, lo
-                        if clo is not None and chi is not None:
-                            conds.append(f"{lo} <= {sel} <= {hi}")
-                        else:
-                            conds.append(f"spin.within({sel}, {lo}, {hi})")
-                        ops += self.expr_ops(v.low) + self.expr_ops(v.high) + \
-                            [jump_op(self.T, "CASE_RANGE", jump_long[id(v)])]
+        for n, item in enumerate(items):
+            conds, ops, per_value = [], [], []
+            for v in item.values:
+                ops = []
+                if isinstance(v, A.Range):
+                    lo, hi = self.value(v.low), self.value(v.high)
+                    clo, chi = self.constant(v.low), self.constant(v.high)
+                    if clo is not None and chi is not None and clo > chi:
+                        lo, hi = hi, lo
+                    if clo is not None and chi is not None:
+                        conds.append(f"{lo} <= {sel} <= {hi}")
                     else:
-                        conds.append(f"{sel} == {self.value(v)}")
-                        ops += self.expr_ops(v) + [jump_op(self.T, "CASE_VALUE", jump_long[id(v)])]
-                    per_value.append(ops)
-                if self.hoisted:
-                    self.unsupported("a case value with side effects", item)
-                cond = " or ".join(conds)
-                self.code.comments_before(item.pos.line)
-                header = self.emit(f"{'if' if n == 0 else 'elif'} {cond}:", item)
-                top = top or header
-                first = first or header
-                if len(per_value) == 1:
-                    self.charge(header, "b", (head if n == 0 else []) + per_value[0])
-                else:                       # each value is compared only if the ones before it failed
-                    self.charge(header, "b", head if n == 0 else [])
-                    self.code.charge_each(header, per_value)
-                _, body_last = self.held_block(8, item.body)
-                self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
-            if other is not None:
-                self.code.comments_before(other.pos.line)
-                if items:
-                    self.code.line("else:", other.pos.line)
-                    _, body_last = self.held_block(8, other.body)
+                        conds.append(f"spin.within({sel}, {lo}, {hi})")
+                    ops += self.expr_ops(v.low) + self.expr_ops(v.high) + \
+                        [jump_op(self.T, "CASE_RANGE", jump_long[id(v)])]
                 else:
-                    self.charge(self.emit("pass", other), "b", head)
-                    self.held += 8
-                    try:
-                        body_last = self.statement_list(other.body)
-                    finally:
-                        self.held -= 8
-                self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
-            elif header is not None:
-                self.charge(header, "e", [jump_op(self.T, "CASE_DONE")])
-        finally:
-            if self.loops:
-                self.loops[-1].cases -= 1
+                    conds.append(f"{sel} == {self.value(v)}")
+                    ops += self.expr_ops(v) + [jump_op(self.T, "CASE_VALUE", jump_long[id(v)])]
+                per_value.append(ops)
+            if self.hoisted:
+                self.unsupported("a case value with side effects", item)
+            cond = " or ".join(conds)
+            self.code.comments_before(item.pos.line)
+            header = self.emit(f"{'if' if n == 0 else 'elif'} {cond}:", item)
+            top = top or header
+            first = first or header
+            if len(per_value) == 1:
+                self.charge(header, "b", (head if n == 0 else []) + per_value[0])
+            else:                       # each value is compared only if the ones before it failed
+                self.charge(header, "b", head if n == 0 else [])
+                self.code.charge_each(header, per_value)
+            _, body_last = self.held_block(8, item.body)
+            self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
+        if other is not None:
+            self.code.comments_before(other.pos.line)
+            if items:
+                self.code.line("else:", other.pos.line)
+                _, body_last = self.held_block(8, other.body)
+            else:
+                self.charge(self.emit("pass", other), "b", head)
+                self.held += 8
+                try:
+                    body_last = self.statement_list(other.body)
+                finally:
+                    self.held -= 8
+            self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
+        elif header is not None:
+            self.charge(header, "e", [jump_op(self.T, "CASE_DONE")])
         return first, top or body_last
 
     def case_jumps(self, items, other) -> dict:
