@@ -146,17 +146,22 @@ class ExprTranslator:
     def x_Paren(self, node) -> X:
         return self.expr(node.expr)
 
-    def constant(self, node):
-        """The folded value of a constant expression, or None."""
+    def constant(self, node, spin_constant: bool = False):
+        """The folded value of a constant expression, or None.
+
+        In a method a DAT label is a variable and ``@label`` depends on where
+        the object sits, so only CON names fold; inside Spin's ``constant()``
+        (``spin_constant``) the compiler's rules apply, a DAT label is its offset.
+        """
         from ..frontend.constants import ConstError, NotConstant, evaluate
+        resolve = self.obj.resolve_const if spin_constant else self._resolve_con
         try:
-            c = evaluate(node, self._resolve_const, self.obj.char_bytes)
+            c = evaluate(node, resolve, self.obj.char_bytes)
         except (NotConstant, ConstError, KeyError, TypeError):
             return None
         return _signed(c.bits)
 
-    def _resolve_const(self, node):
-        """CON names and ``obj#X`` only: in a method a DAT label is a variable and ``@label`` depends on the object's address."""
+    def _resolve_con(self, node):
         if isinstance(node, A.AddrOf) or (isinstance(node, A.NameRef) and self.obj.const(node.name) is None):
             return None
         return self.obj.resolve_const(node)

@@ -409,7 +409,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         name = node.name.lower()
         args = node.args or []
         if name in ("constant", "float", "round", "trunc"):
-            v = self.constant(node)
+            v = self.constant(node, spin_constant=True)
             return X(str(v), 14 if v >= 0 else 11, const=v)
         if name == "string":
             offset = self.objt.string_offset(self.method, node)
