@@ -238,11 +238,22 @@ class ExprTranslator:
         return X(f"cog.spr[{self.expr(node.index).text}]")
 
     def child(self, node, index) -> str:
-        """The child object ``node.obj`` (``obj[i]``); an array named without an index is its element 0, as in Spin."""
+        """The child object ``node.obj`` (``obj[i]``); an array named without an index is its element 0, as in Spin.
+
+        Spin indexes the object table from the OBJ line's first entry, so
+        ``obj[0]`` of a single object is that object; an index past the OBJ
+        line reaches another entry, which Python cannot follow.
+        """
         obj = f"self.{self.names.attr(node.obj)}"
-        if index is not None:
-            return obj + f"[{self.value(index)}]"
-        return obj + ("[0]" if getattr(self.lookup(node.obj, node)[1], "count", 1) > 1 else "")
+        count = self.lookup(node.obj, node)[1].count
+        if index is None:
+            return obj + ("[0]" if count > 1 else "")
+        c = self.constant(index)
+        if count == 1 and c == 0:
+            return obj
+        if count == 1 or (c is not None and not 0 <= c < count):
+            self.unsupported(f"an index on object '{node.obj}' past its {count} instance{'s' if count > 1 else ''}", node)
+        return obj + f"[{self.value(index)}]"
 
     def x_ObjConst(self, node) -> X:
         obj = self.child(node, None)

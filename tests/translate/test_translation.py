@@ -103,6 +103,16 @@ def test_unsupported_constructs_name_the_construct_and_its_line(tmp_path):
     assert not (tmp_path / "out").exists()
 
 
+def test_an_object_index_past_the_obj_line_is_named_with_its_place(tmp_path):
+    (tmp_path / "kid.spin").write_text("PUB f\n  return 1\n")
+    src = tmp_path / "far.spin"
+    src.write_text('OBJ\n  one : "kid"\n  two[2] : "kid"\nVAR\n  long r\n'
+                   "PUB main\n  r := one[0].f + two[1].f\n  r := two[2].f\n")
+    with pytest.raises(SpinError) as err:
+        translate.translate_file(src, tmp_path / "out")
+    assert "far.spin:8:8: error: cannot translate an index on object 'two' past its 2 instances" in str(err.value)
+
+
 def test_spin_errors_come_from_the_front_end(tmp_path):
     src = tmp_path / "bad.spin"
     src.write_text("PUB main\n  x := 1\n")
