@@ -81,14 +81,14 @@ def _method_name(call):
     return f.attr if isinstance(f, ast.Attribute) else None
 
 
-def _wrap_calls(stmt, depths: list) -> None:
+def _wrap_calls(stmt, depths: list, k: int = 0) -> int:
     """``f(args)`` -> ``__spin_call_at(depth, f, args)`` for the calls of a line whose calls start at different depths.
 
     ``depths`` lists ``(method, depth)`` in the order the Spin calls run,
     which is the order Python makes them; each call takes the next entry of
-    its name.
+    its name from ``k`` on.  Returns where the next line of the statement
+    (values hoisted before it) goes on.
     """
-    k = 0
     for call in _calls_in_order(stmt):
         name = _method_name(call)
         j = next((j for j in range(k, len(depths)) if depths[j][0] == name), None)
@@ -97,10 +97,12 @@ def _wrap_calls(stmt, depths: list) -> None:
         call.args = [ast.copy_location(ast.Constant(depths[j][1]), call), call.func] + call.args
         call.func = ast.copy_location(ast.Name(_CALL_AT, ast.Load()), call)
         k = j + 1
+    return k
 
 
 def _weave_body(stmts: list, table: dict, depths: dict) -> list:
     out = []
+    calls = None                    # (line, its depths, how many its calls used)
     for s in stmts:
         for field in ("body", "orelse", "finalbody"):
             if isinstance(getattr(s, field, None), list) and not isinstance(s, ast.FunctionDef):
@@ -108,8 +110,12 @@ def _weave_body(stmts: list, table: dict, depths: dict) -> list:
         if isinstance(s, ast.Try):
             for h in s.handlers:
                 h.body = _weave_body(h.body, table, depths)
-        if depths.get(s.lineno).__class__ is list:
-            _wrap_calls(s, depths[s.lineno])
+        listed = depths.get(s.lineno)
+        if listed.__class__ is list:
+            # the next line of one statement (a value hoisted before it) goes on where this one stopped
+            going_on = calls is not None and calls[0] == s.lineno - 1 and calls[1] == listed \
+                and calls[2] < len(listed)
+            calls = (s.lineno, listed, _wrap_calls(s, listed, calls[2] if going_on else 0))
         row = table.get(s.lineno)
         if row is None:
             out.append(s)
