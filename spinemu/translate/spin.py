@@ -596,6 +596,19 @@ class Frame:
         return _Array(self.addr(name, index), {1: byte, 2: word, 4: long}[size])
 
 
+def left_on_stack(*offsets):
+    """What locals Spin does not initialise start with: the longs at their places in the method's frame.
+
+    Used in methods a ``cognew`` can start: there the new cog's frame holds
+    what RUN wrote (the interpreter's start words), on both engines.  One
+    offset gives one value, several a tuple.
+    """
+    import sys
+    base = _frame_base(sys._getframe(1))
+    values = tuple(long[base + o] for o in offsets)
+    return values[0] if len(values) == 1 else values
+
+
 def call_at(depth: int, method, *args):
     """Call a translated method whose frame starts ``depth`` stack bytes above its caller's.
 
