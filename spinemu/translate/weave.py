@@ -11,6 +11,11 @@ tracebacks.  This is how pytest rewrites ``assert`` statements: the file you
 read is the file that runs, plus bookkeeping that does not change what it
 computes.
 
+A line whose calls start at different stack depths (``SPIN_CALL_DEPTHS``
+lists ``(method, depth)`` for it) has each call wrapped as
+``__spin_call_at(depth, method, args...)`` so the callee's hub frame lands
+where the bytecode interpreter puts it (:func:`spinemu.translate.spin.call_at`).
+
 Each charge is ``(aligned, extra)``: ``aligned`` cycles charged with a
 bytecode fetch's hub alignment (:func:`spinemu.translate.runtime.tick`),
 ``extra`` cycles without (:func:`~spinemu.translate.runtime.add`).
