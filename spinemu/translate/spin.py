@@ -609,13 +609,13 @@ def left_on_stack(*offsets):
     return values[0] if len(values) == 1 else values
 
 
-def call_at(depth: int, method, *args):
+def call_at(depth: int, method, *args, **kwargs):
     """Call a translated method whose frame starts ``depth`` stack bytes above its caller's.
 
     The weaver wraps the calls of a line whose calls start at different
     depths (``f(g(x), g(y))``) with this, so :func:`_frame_base` finds each one's.
     """
-    return method(*args)
+    return method(*args, **kwargs)
 
 
 _CALL_AT = call_at.__code__

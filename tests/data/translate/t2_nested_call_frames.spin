@@ -11,6 +11,7 @@ PUB main
   r5 := \plus(at(8), 0)
   r[i++] := plus(at(9), at(10)) + at(11)   ' the value is computed before i++
   r[i++] := plus(at(9), at(10)) + at(11)
+  \plus(at(12), 1)                       ' a trapped call whose result is dropped
 PRI at(x)
   return @x
 PRI plus(a, b)
