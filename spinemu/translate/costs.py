@@ -275,34 +275,36 @@ def _rest(T: Timing, data, i: int, op: int, run_params: int, inside: bool) -> in
     raise ValueError(f"cannot price bytecode {name}")
 
 
-def call_depths(data: bytes, nparams) -> list:
-    """Stack bytes in use when each FRAME in ``data`` starts (where the called method's frame goes).
+def call_depths(data: bytes, callee) -> list:
+    """``(depth, name)`` of each call in ``data``, in the order the calls run: the stack bytes in use when its FRAME started (where the called method's frame goes) and the method's name.
 
-    ``nparams(code_bytes, i)`` gives the parameter count of the call at ``i``.
-    Depth is counted in longs from the statement's start; a FRAME takes three
-    (return frame and result), a CALL drops the parameters and the frame and
-    leaves the result if the frame kept it.
+    ``callee(code_bytes, i)`` gives ``(parameter count, name)`` of the call at
+    ``i``.  Depth is counted in longs from the statement's start; a FRAME takes
+    three (return frame and result), a CALL drops the parameters and the frame
+    and leaves the result if the frame kept it.  A call runs after the calls
+    in its arguments (``f(g(x))``: g first), though its FRAME came first.
     """
-    depths, depth, frames = [], 0, []
+    calls, depth, frames = [], 0, []
     i = 0
     while i < len(data):
         op = data[i]
         length = instruction_length(data, i)
         entry = TABLE[op]
         if op <= 0x03:
-            depths.append(4 * depth)
-            frames.append(op)
+            frames.append((op, 4 * depth))
             depth += 3
         elif op in (0x05, 0x06, 0x07):
-            depth -= nparams(data, i) + 3 + (1 if op == 0x07 else 0)
-            kept = frames.pop() & 1 == 0 if frames else False
-            depth += 1 if kept else 0
+            nparams, name = callee(data, i)
+            depth -= nparams + 3 + (1 if op == 0x07 else 0)
+            frame, at = frames.pop() if frames else (1, 4 * depth)
+            calls.append((at, name))
+            depth += 1 if frame & 1 == 0 else 0
         elif 0x40 <= op < 0xE0 or op in (0x3D, 0x3E, 0x3F, 0x26):
             depth += _access_effect(data, i, op)
         elif entry.pops is not None and entry.pushes is not None:
             depth += entry.pushes - entry.pops
         i += length
-    return depths
+    return calls
 
 
 def _access_effect(data, i: int, op: int) -> int:

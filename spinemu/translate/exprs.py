@@ -299,7 +299,7 @@ class ExprTranslator:
         if op == "!":
             return X(f"~{x.paren(11)}", 11, wrapped=x.wrapped)
         if op == "NOT":
-            return X(f"not {self.truth(x)}", 3, boolean=True)
+            return X(f"not {self.truth(x)}", PREC["not"], boolean=True)
         if op == "||":
             return X(f"abs({self.wrapped(x).text})", wrapped=False)
         if op in _HELPER_UN:
@@ -309,7 +309,8 @@ class ExprTranslator:
         self.unsupported(f"the operator {node.op}", node)
 
     def truth(self, x: X) -> str:
-        return x.text if x.boolean else self.wrapped(x).paren(4)
+        """``x`` as the operand of Python's ``not`` (``not (a and b)`` keeps its parentheses)."""
+        return x.paren(PREC["not"]) if x.boolean else self.wrapped(x).paren(PREC["cmp"])
 
     def x_Binary(self, node) -> X:
         op = node.op.upper() if node.op.isalpha() else node.op

@@ -170,6 +170,7 @@ class ObjectTranslator:
         self._dat_counts = _dat_counts(unit, self.oc)
         self.frame_methods: set = set()
         self._offsets = None
+        self.cog_methods = _cog_methods(unit)
 
     # ------------------------------------------------------------------ lookups (for MethodTranslator)
     def unsupported(self, what: str, node):
@@ -397,9 +398,18 @@ class ObjectTranslator:
             self.frame_methods.add(m.name)
         else:
             inits = [self.names.local(m.result or "result")] if uses_result else []
-            inits += [self.names.local(loc.name) for loc in m.locals if _needs_init(m, loc.name)]
-            if inits:
-                code.line(" = ".join(inits) + " = 0")
+            unset = [loc.name for loc in m.locals if _needs_init(m, loc.name)]
+            if key(m.name) in self.cog_methods and unset:
+                # a cog can start here: its stack holds what cognew left (the interpreter's start words)
+                if inits:
+                    code.line(" = ".join(inits) + " = 0")
+                inits = [self.names.local(n) for n in unset]
+                offsets = ", ".join(str(mt.frame[key(n)].offset) for n in unset)
+                code.line(f"{', '.join(inits)} = spin.left_on_stack({offsets})")
+            else:
+                inits += [self.names.local(n) for n in unset]
+                if inits:
+                    code.line(" = ".join(inits) + " = 0")
         last = None
         for st in m.body:
             _first, last = mt.statement(st)
@@ -606,6 +616,19 @@ def _values_used(units) -> frozenset:
 
 def _count_mentions(body, name: str) -> int:
     return sum(1 for n in _walk(body) if isinstance(n, A.NameRef) and key(n.name) == name)
+
+
+def _cog_methods(unit) -> set:
+    """Keys of the methods of ``unit`` that a ``cognew``/``coginit`` starts a cog in."""
+    found = set()
+    for m in unit.spin.methods:
+        for n in _walk(m.body):
+            if isinstance(n, A.Builtin) and n.name.lower() in ("cognew", "coginit") and n.args:
+                first = n.args[0] if n.name.lower() == "cognew" else n.args[min(1, len(n.args) - 1)]
+                first = first.expr if isinstance(first, A.Paren) else first
+                if isinstance(first, (A.Call, A.NameRef)):
+                    found.add(key(first.name))
+    return found
 
 
 def _needs_init(m, name: str) -> bool:

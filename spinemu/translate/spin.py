@@ -596,6 +596,31 @@ class Frame:
         return _Array(self.addr(name, index), {1: byte, 2: word, 4: long}[size])
 
 
+def left_on_stack(*offsets):
+    """What locals Spin does not initialise start with: the longs at their places in the method's frame.
+
+    Used in methods a ``cognew`` can start: there the new cog's frame holds
+    what RUN wrote (the interpreter's start words), on both engines.  One
+    offset gives one value, several a tuple.
+    """
+    import sys
+    base = _frame_base(sys._getframe(1))
+    values = tuple(long[base + o] for o in offsets)
+    return values[0] if len(values) == 1 else values
+
+
+def call_at(depth: int, method, *args, **kwargs):
+    """Call a translated method whose frame starts ``depth`` stack bytes above its caller's.
+
+    The weaver wraps the calls of a line whose calls start at different
+    depths (``f(g(x), g(y))``) with this, so :func:`_frame_base` finds each one's.
+    """
+    return method(*args, **kwargs)
+
+
+_CALL_AT = call_at.__code__
+
+
 def _frame_base(pyframe) -> int:
     """The hub address of the frame (``dbase``) of the translated method running in ``pyframe``.
 
@@ -604,19 +629,29 @@ def _frame_base(pyframe) -> int:
     the caller's expression had pushed + 8`` (the return frame).  The chain
     of translated methods is read from the Python call stack, from the cog's
     top method (whose frame the runtime knows) down to this one; each module
-    lists its methods' frame sizes and its lines' stack use at calls.
+    lists its methods' frame sizes and its lines' stack use at calls (one
+    number per line, or a :func:`call_at` between caller and callee).
     """
     chain = []
     f = pyframe
+    depth = None
     while f is not None:
-        sizes = f.f_globals.get("SPIN_FRAME_SIZES")
-        if sizes is not None and f.f_code.co_name in sizes:
-            chain.append(f)
+        code = f.f_code
+        if code is _CALL_AT:
+            depth = f.f_locals["depth"]
+        else:
+            sizes = f.f_globals.get("SPIN_FRAME_SIZES")
+            if sizes is not None and code.co_name in sizes:
+                chain.append((f, depth))
+                depth = None
         f = f.f_back
     chain.reverse()
     dbase = RT.cog.dbase
-    for caller in chain[:-1]:
+    for caller, depth in chain[:-1]:
         g = caller.f_globals
-        depth = g.get("SPIN_CALL_DEPTHS", {}).get(caller.f_lineno, 0)
+        if depth is None:
+            depth = g.get("SPIN_CALL_DEPTHS", {}).get(caller.f_lineno, 0)
+            if depth.__class__ is list:     # a call the weaver did not wrap: the line's first
+                depth = depth[0][1]
         dbase += g["SPIN_FRAME_SIZES"][caller.f_code.co_name] + depth + 8
     return dbase & 0xFFFF

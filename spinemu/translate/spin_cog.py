@@ -35,9 +35,14 @@ def _fetched() -> int:
 
 
 def _read(reg: int, op: int) -> int:
+    return _read_at(reg, RT.T.reg_read_at[(op, 0)])
+
+
+def _read_at(reg: int, read_at: int) -> int:
+    """Read ``reg`` ``read_at`` cycles after the reading bytecode's fetch; the read pays the statement's rest."""
     c = RT.cog
     tf = _fetched()
-    value = RT.chip.registers.read(c, reg, tf + RT.T.reg_read_at[(op, 0)])
+    value = RT.chip.registers.read(c, reg, tf + read_at)
     if RT.pending is not None:          # the statement's bytecodes from this read on
         c.t = tf + RT.pending
         RT.pending = None
@@ -129,7 +134,7 @@ class _Spr:
     __slots__ = ()
 
     def __getitem__(self, i: int) -> int:
-        return wrap(RT.chip.registers.read(RT.cog, 0x1F0 + (i & 15), _fetched() + RT.T.spr_read_at))
+        return wrap(_read_at(0x1F0 + (i & 15), RT.T.spr_read_at))
 
     def __setitem__(self, i: int, value: int) -> None:
         _write(0x1F0 + (i & 15), value)

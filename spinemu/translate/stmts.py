@@ -114,24 +114,37 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.last_data = data
         return price(self.T, data, **kw)
 
-    def nparams(self, data, i: int) -> int:
-        """Parameters of the method the CALL/CALL_OBJ at ``data[i]`` calls."""
+    def callee(self, data, i: int) -> tuple:
+        """``(parameter count, Python name)`` of the method the CALL/CALL_OBJ at ``data[i]`` calls."""
         if data[i] == 0x05:
-            return self.obj.symbols.methods[data[i + 1] - 1].nparams
+            m = self.obj.symbols.methods[data[i + 1] - 1]
+            return m.nparams, self.names.attr(m.name)
         entry, method = data[i + 1], data[i + 2]
         for sym in self.obj.symbols.objects:
             if sym.index <= entry < sym.index + sym.count:
                 pubs = [m for m in sym.unit.spin.methods if m.public]
-                return len(pubs[method - 1].params)
-        return 0
+                return len(pubs[method - 1].params), self.names.child_method(sym.name, pubs[method - 1].name)
+        return 0, None
 
     def note_depths(self, lines) -> None:
-        """Record the stack bytes in use at the first call of the piece compiled last, for ``lines``."""
-        depths = call_depths(self.last_data, self.nparams)
-        if depths and depths[0] + self.held:
+        """Record the stack bytes in use at the calls of the piece compiled last, for ``lines``.
+
+        One number when every call of the statement starts at the same depth;
+        else ``[(method, depth), ...]`` in the order the calls run
+        (``f(g(x), g(y))``: g above f's frame, the second g one long higher,
+        then f); the weaver hands each call its own depth.
+        """
+        calls = call_depths(self.last_data, self.callee)
+        if not calls:
+            return
+        if all(d == calls[0][0] for d, _ in calls):
+            depth = calls[0][0] + self.held if calls[0][0] + self.held else None
+        else:
+            depth = [(name, d + self.held) for d, name in calls]
+        if depth is not None:
             for line in lines:
                 if line is not None:
-                    self.code.call_depths[line] = depths[0] + self.held
+                    self.code.call_depths[line] = depth
 
     def size(self, fn) -> int:
         mc = self.mc

@@ -11,6 +11,11 @@ tracebacks.  This is how pytest rewrites ``assert`` statements: the file you
 read is the file that runs, plus bookkeeping that does not change what it
 computes.
 
+A line whose calls start at different stack depths (``SPIN_CALL_DEPTHS``
+lists ``(method, depth)`` for it) has each call wrapped as
+``__spin_call_at(depth, method, args...)`` so the callee's hub frame lands
+where the bytecode interpreter puts it (:func:`spinemu.translate.spin.call_at`).
+
 Each charge is ``(aligned, extra)``: ``aligned`` cycles charged with a
 bytecode fetch's hub alignment (:func:`spinemu.translate.runtime.tick`),
 ``extra`` cycles without (:func:`~spinemu.translate.runtime.add`).
@@ -28,6 +33,7 @@ from . import runtime, spin
 __all__ = ["prepare", "load_package"]
 
 _TICK, _TICK_AT, _TICK_READ, _ADD = "__spin_tick", "__spin_tick_at", "__spin_tick_read", "__spin_add"
+_CALL_AT = "__spin_call_at"
 
 
 def _call(name, args, anchor):
@@ -54,15 +60,67 @@ def _charge_stmts(charge, anchor) -> list:
     return out
 
 
-def _weave_body(stmts: list, table: dict) -> list:
+def _calls_in_order(stmt) -> list:
+    """The calls in a statement's own expressions (not its body), in the order Python makes them."""
     out = []
+
+    def visit(n):
+        if isinstance(n, ast.stmt) and n is not stmt:
+            return                      # a nested body's statements are lines of their own
+        children = list(ast.iter_child_nodes(n))
+        if isinstance(n, ast.Assign):   # the value runs before the targets' indexes
+            children = [n.value] + n.targets
+        for c in children:
+            visit(c)
+        if isinstance(n, ast.Call):
+            out.append(n)
+
+    visit(stmt)
+    return out
+
+
+def _method_name(call):
+    f = call.func
+    if isinstance(f, ast.Attribute) and f.attr == "trap" and call.args and isinstance(call.args[0], ast.Attribute):
+        return call.args[0].attr        # spin.trap(self.f, x): Spin's \f(x)
+    return f.attr if isinstance(f, ast.Attribute) else None
+
+
+def _wrap_calls(stmt, depths: list, k: int = 0) -> int:
+    """``f(args)`` -> ``__spin_call_at(depth, f, args)`` for the calls of a line whose calls start at different depths.
+
+    ``depths`` lists ``(method, depth)`` in the order the Spin calls run,
+    which is the order Python makes them; each call takes the next entry of
+    its name from ``k`` on.  Returns where the next line of the statement
+    (values hoisted before it) goes on.
+    """
+    for call in _calls_in_order(stmt):
+        name = _method_name(call)
+        j = next((j for j in range(k, len(depths)) if depths[j][0] == name), None)
+        if j is None:
+            continue
+        call.args = [ast.copy_location(ast.Constant(depths[j][1]), call), call.func] + call.args
+        call.func = ast.copy_location(ast.Name(_CALL_AT, ast.Load()), call)
+        k = j + 1
+    return k
+
+
+def _weave_body(stmts: list, table: dict, depths: dict) -> list:
+    out = []
+    calls = None                    # (line, its depths, how many its calls used)
     for s in stmts:
         for field in ("body", "orelse", "finalbody"):
             if isinstance(getattr(s, field, None), list) and not isinstance(s, ast.FunctionDef):
-                setattr(s, field, _weave_body(getattr(s, field), table))
+                setattr(s, field, _weave_body(getattr(s, field), table, depths))
         if isinstance(s, ast.Try):
             for h in s.handlers:
-                h.body = _weave_body(h.body, table)
+                h.body = _weave_body(h.body, table, depths)
+        listed = depths.get(s.lineno)
+        if listed.__class__ is list:
+            # the next line of one statement (a value hoisted before it) goes on where this one stopped
+            going_on = calls is not None and calls[0] == s.lineno - 1 and calls[1] == listed \
+                and calls[2] < len(listed)
+            calls = (s.lineno, listed, _wrap_calls(s, listed, calls[2] if going_on else 0))
         row = table.get(s.lineno)
         if row is None:
             out.append(s)
@@ -101,8 +159,8 @@ def _weave_body(stmts: list, table: dict) -> list:
     return out
 
 
-def _weave_function(fn: ast.FunctionDef, table: dict) -> ast.FunctionDef:
-    fn.body = _weave_body(fn.body, table)
+def _weave_function(fn: ast.FunctionDef, table: dict, depths: dict) -> ast.FunctionDef:
+    fn.body = _weave_body(fn.body, table, depths)
     row = table.get(fn.lineno)
     if row is not None and row[1] is not None:
         fn.body.extend(_charge_stmts(row[1], fn.body[-1]))
@@ -121,11 +179,13 @@ def prepare(cls) -> None:
     module.__dict__[_TICK_AT] = runtime.tick_at
     module.__dict__[_TICK_READ] = runtime.tick_read
     module.__dict__[_ADD] = runtime.add
+    module.__dict__[_CALL_AT] = spin.call_at
+    depths = getattr(module, "SPIN_CALL_DEPTHS", {})
     for node in tree.body:
         if isinstance(node, ast.ClassDef) and node.name == cls.__name__:
             for item in node.body:
                 if isinstance(item, ast.FunctionDef):
-                    fn = _weave_function(item, table)
+                    fn = _weave_function(item, table, depths)
                     code = compile(ast.Module([fn], []), module.__file__, "exec")
                     ns: dict = {}
                     exec(code, module.__dict__, ns)    # defines the woven function (no user strings)

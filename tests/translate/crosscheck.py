@@ -7,8 +7,9 @@ The bytecode engine is the reference.  Two runs agree when:
   cycles, usually 0);
 * hub RAM is identical except each Spin cog's stack: from the cog's return
   frame (8 bytes below its first frame) up to four longs past the highest
-  stack pointer the bytecode interpreter reached (RUN and the assignment
-  operators leave scratch values just above it), and at least what the RUN
+  stack pointer the bytecode interpreter reached, its busy-loop learner
+  included (RUN and the assignment operators leave scratch values just
+  above it), and at least what the RUN
   bytecode wrote for a ``cognew`` (frame, arguments, the new cog's
   interpreter words).  The Python engine keeps locals, parameters and
   expression values in Python, so those bytes are dead scratch it does not
@@ -21,6 +22,7 @@ from dataclasses import dataclass
 
 from spinemu.analysis.compare import compare_traces
 from spinemu.chip import Chip
+from spinemu.chip.fastforward import tracking_handlers
 from spinemu.compiler import compile_file
 from spinemu import translate
 
@@ -58,7 +60,14 @@ def run_bytecode(src: str, max_cycles: int, compat: str = "spinsim"):
             return rest
         return run
 
+    # every interpreter the chip runs bytecode with: its handlers, the copy it
+    # restores after a preemption, and the busy-loop learner's tracking copy
+    # (which really runs the cog: a call it makes uses the stack as well)
     chip.handlers[:] = [watch(h) for h in chip.handlers]
+    chip._handlers[:] = chip.handlers
+    tracking, log = tracking_handlers(chip, chip.timing)
+    tracking[:] = [watch(h) for h in tracking]
+    chip._tracking = (tracking, log)
     return chip.run(max_cycles), high
 
 
