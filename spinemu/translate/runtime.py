@@ -32,7 +32,8 @@ from . import spin
 from .costs import drop_result_delta
 from .spin import RT, Abort
 
-__all__ = ["PythonChip", "Engine", "instantiate", "run_class", "tick", "tick_at", "tick_read", "add"]
+__all__ = ["PythonChip", "Engine", "instantiate", "run_class", "tick", "tick_at", "tick_read", "add",
+           "pause_tick", "pause_tick_at"]
 
 _NEVER = 1 << 62
 _ACCESS = access_offsets()
@@ -70,6 +71,18 @@ def tick_at(k: int, access: int, last: int = -1) -> None:
         RT.keys[c.id] = t + access if t + access >= RT.limit else RT.final
         RT.pause()
     c.t = t + k
+
+
+def pause_tick(t: int) -> None:
+    """:func:`tick`'s hand-over to the scheduler, for charges written out in a method (spinemu.translate.inline)."""
+    RT.keys[RT.cog.id] = t
+    RT.pause()
+
+
+def pause_tick_at(t: int, access: int) -> None:
+    """:func:`tick_at`'s hand-over to the scheduler, for charges written out in a method."""
+    RT.keys[RT.cog.id] = t + access if t + access >= RT.limit else RT.final
+    RT.pause()
 
 
 def tick_read(k, access, rest: int) -> None:

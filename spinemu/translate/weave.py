@@ -29,6 +29,7 @@ import os
 import sys
 
 from . import runtime, spin
+from .inline import inline_method, install
 
 __all__ = ["prepare", "load_package"]
 
@@ -180,12 +181,13 @@ def prepare(cls) -> None:
     module.__dict__[_TICK_READ] = runtime.tick_read
     module.__dict__[_ADD] = runtime.add
     module.__dict__[_CALL_AT] = spin.call_at
+    install(module.__dict__)
     depths = getattr(module, "SPIN_CALL_DEPTHS", {})
     for node in tree.body:
         if isinstance(node, ast.ClassDef) and node.name == cls.__name__:
             for item in node.body:
                 if isinstance(item, ast.FunctionDef):
-                    fn = _weave_function(item, table, depths)
+                    fn = inline_method(_weave_function(item, table, depths), cls)
                     code = compile(ast.Module([fn], []), module.__file__, "exec")
                     ns: dict = {}
                     exec(code, module.__dict__, ns)    # defines the woven function (no user strings)

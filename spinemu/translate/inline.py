@@ -1,0 +1,236 @@
+"""Inlining the runtime's hot helpers into a woven method (the Python engine's speed).
+
+:mod:`spinemu.translate.weave` inserts each statement's cycle charge as a
+call (``__spin_tick(276)``); the generated module the user reads never shows
+them.  This pass, run on the woven tree before it is compiled, replaces the
+hottest of those calls and of the hub accessors with the same arithmetic
+written out in the method, on locals bound once at its start:
+
+* a charge statement ``__spin_tick(k)`` / ``__spin_tick_at(k, access[, last])``
+  / ``__spin_add(k)`` becomes the lines of :func:`spinemu.translate.runtime.tick`
+  / ``tick_at`` / ``add``, with the running cog and its hub phase in locals
+  (a method runs in one cog's greenlet from start to end); the hand-over to
+  the scheduler stays where it was, at the same cycle, through
+  :func:`~spinemu.translate.runtime.pause_tick` / ``pause_tick_at``;
+* ``self.x`` of a long VAR/DAT variable and ``self.a[i]`` of a long array
+  read and write the hub's long views directly, the address worked out as
+  :mod:`spinemu.translate.spin`'s properties and array views do (a store at or
+  past $8000 is dropped, as there).
+
+Python evaluates everything in the same order as before (values before
+stores, an augmented target read before its value), so what a method
+computes and when it pays is unchanged; only the calls go.
+"""
+from __future__ import annotations
+
+import ast
+
+from . import spin
+
+__all__ = ["inline_method", "GLOBALS"]
+
+_COG, _PHASE, _T, _RT = "__spin_c", "__spin_p", "__spin_t", "__spin_RT"
+_L, _LS = "__spin_L", "__spin_Ls"
+_PAUSE, _PAUSE_AT = "__spin_pause_tick", "__spin_pause_tick_at"
+_ADDR, _VALUE = "__spin_a", "__spin_v"
+_STORE_AT = f"if {_ADDR} < 0x8000:\n    {_L}[{_ADDR} >> 2] = {_VALUE} & 0xFFFFFFFF"    # as spin._Longs.__setitem__
+
+
+def _name(n: str, store: bool = False) -> ast.Name:
+    return ast.Name(n, ast.Store() if store else ast.Load())
+
+
+def _parse(src: str) -> list:
+    return ast.parse(src).body
+
+
+# ----------------------------------------------------------------------------- cycle charges
+def _charge(stmt):
+    """``(helper, constant args)`` if ``stmt`` is a woven charge statement, else None."""
+    if not (isinstance(stmt, ast.Expr) and isinstance(stmt.value, ast.Call)):
+        return None
+    call = stmt.value
+    if not isinstance(call.func, ast.Name) or call.keywords:
+        return None
+    if call.func.id not in ("__spin_tick", "__spin_tick_at", "__spin_add"):
+        return None
+    if not all(isinstance(a, ast.Constant) and isinstance(a.value, int) for a in call.args):
+        return None
+    return call.func.id, [a.value for a in call.args]
+
+
+def _charge_lines(helper: str, args: list) -> list:
+    """The lines of ``runtime.tick``/``tick_at``/``add`` for constant arguments."""
+    c, t = _COG, _T
+    if helper == "__spin_add":
+        return _parse(f"{c}.t += {args[0]}")
+    align = f"{t} = {c}.t + 12\n{t} += ({_PHASE} - {t}) & 15\n"
+    if helper == "__spin_tick":
+        k, = args
+        return _parse(f"{align}if {t} >= {_RT}.limit:\n    {_PAUSE}({t})\n{c}.t = {t} + {k}")
+    k, access, last = (list(args) + [-1])[:3]
+    return _parse(f"{align}if {t} + {access} >= {_RT}.limit or {t} + {last} >= {_RT}.final:\n"
+                  f"    {_PAUSE_AT}({t}, {access})\n{c}.t = {t} + {k}")
+
+
+# ----------------------------------------------------------------------------- hub longs
+def _long_var(cls, name: str):
+    """``('scalar' | 'array', descriptor)`` if ``cls.name`` is a long VAR/DAT variable, else None."""
+    for klass in cls.__mro__:
+        if name in klass.__dict__:
+            d = klass.__dict__[name]
+            if isinstance(d, spin._Scalar) and d.mem is spin.long:
+                return "scalar", d
+            if isinstance(d, spin._Elements) and d.mem is spin.long:
+                return "array", d
+            return None
+    return None
+
+
+class _Hub(ast.NodeTransformer):
+    """Rewrites the long variables' reads and stores; remembers which locals the method's start must bind."""
+
+    def __init__(self, cls, this: str):
+        self.cls, self.this = cls, this
+        self.used: dict = {}        # local name -> its binding's source text
+
+    def _var(self, node, kind: str):
+        """The local holding ``self.x``'s long index (scalar) or hub address (array), or None."""
+        if not (isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == self.this):
+            return None
+        found = _long_var(self.cls, node.attr)
+        if found is None or found[0] != kind:
+            return None
+        local = f"__spin_{kind[0]}_{node.attr}"
+        d = found[1]
+        base = f"{self.this}.{'_pbase' if d.dat else '_vbase'}"
+        self.used[local] = f"({base} + {d.offset}) >> 2" if kind == "scalar" else f"{self.this}.{node.attr}.addr"
+        return local
+
+    def _index(self, sub) -> ast.expr:
+        """``((addr + (i << 2)) & 0xFFFF)`` for ``self.a[i]`` (None if it is not a long array)."""
+        local = self._var(sub.value, "array")
+        if local is None or isinstance(sub.slice, ast.Slice):
+            return None
+        i = self.visit(sub.slice)
+        shifted = ast.BinOp(i, ast.LShift(), ast.Constant(2))
+        return ast.BinOp(ast.BinOp(_name(local), ast.Add(), shifted), ast.BitAnd(), ast.Constant(0xFFFF))
+
+    def visit_Attribute(self, node):
+        if isinstance(node.ctx, ast.Load):
+            local = self._var(node, "scalar")
+            if local is not None:
+                return ast.copy_location(ast.Subscript(_name(_LS), _name(local), ast.Load()), node)
+        return self.generic_visit(node)
+
+    def visit_Subscript(self, node):
+        if isinstance(node.ctx, ast.Load):
+            addr = self._index(node)
+            if addr is not None:
+                index = ast.BinOp(addr, ast.RShift(), ast.Constant(2))
+                return ast.copy_location(ast.Subscript(_name(_LS), index, ast.Load()), node)
+        return self.generic_visit(node)
+
+    def _store(self, target, value_stmts: list) -> list:
+        """Statements storing ``__spin_v`` into ``target`` (a long scalar or array element), or None."""
+        if isinstance(target, ast.Attribute):
+            local = self._var(target, "scalar")
+            if local is None:
+                return None
+            text = f"if {local} < 0x2000:\n    {_L}[{local}] = {_VALUE} & 0xFFFFFFFF"
+            return value_stmts + _parse(text)
+        return None
+
+    def visit_Assign(self, node):
+        if len(node.targets) == 1:
+            target = node.targets[0]
+            value = self.visit(node.value)
+            keep = ast.Assign([_name(_VALUE, True)], value)
+            out = self._store(target, [keep])
+            if out is None and isinstance(target, ast.Subscript):
+                addr = self._index(target)
+                if addr is not None:
+                    out = [keep, ast.Assign([_name(_ADDR, True)], addr)] + _parse(_STORE_AT)
+            if out is not None:
+                return [ast.fix_missing_locations(ast.copy_location(s, node)) for s in out]
+            node.value = value
+            node.targets = [self.visit(target)]
+            return node
+        return self.generic_visit(node)
+
+    def visit_AugAssign(self, node):
+        target = node.target
+        if isinstance(target, ast.Attribute):
+            local = self._var(target, "scalar")
+            if local is not None:
+                now = ast.Subscript(_name(_LS), _name(local), ast.Load())
+                keep = ast.Assign([_name(_VALUE, True)], ast.BinOp(now, node.op, self.visit(node.value)))
+                out = self._store(target, [keep])
+                return [ast.fix_missing_locations(ast.copy_location(s, node)) for s in out]
+        elif isinstance(target, ast.Subscript):
+            addr = self._index(target)
+            if addr is not None:
+                now = ast.Subscript(_name(_LS), ast.BinOp(_name(_ADDR), ast.RShift(), ast.Constant(2)), ast.Load())
+                out = [ast.Assign([_name(_ADDR, True)], addr),
+                       ast.Assign([_name(_VALUE, True)], ast.BinOp(now, node.op, self.visit(node.value)))]
+                out += _parse(_STORE_AT)
+                return [ast.fix_missing_locations(ast.copy_location(s, node)) for s in out]
+        return self.generic_visit(node)
+
+
+# ----------------------------------------------------------------------------- the pass
+def _inline_body(stmts: list) -> tuple:
+    """Charge statements written out in ``stmts`` (and nested bodies); returns (new list, any inlined?)."""
+    out, any_ = [], False
+    for s in stmts:
+        for field in ("body", "orelse", "finalbody"):
+            body = getattr(s, field, None)
+            if isinstance(body, list) and body and isinstance(body[0], ast.stmt) \
+                    and not isinstance(s, (ast.FunctionDef, ast.ClassDef)):
+                new, hit = _inline_body(body)
+                setattr(s, field, new)
+                any_ |= hit
+        if isinstance(s, ast.Try):
+            for h in s.handlers:
+                h.body, hit = _inline_body(h.body)
+                any_ |= hit
+        found = _charge(s)
+        if found is None:
+            out.append(s)
+            continue
+        any_ = True
+        out.extend(ast.fix_missing_locations(ast.copy_location(n, s)) for n in _charge_lines(*found))
+    return out, any_
+
+
+def inline_method(fn: ast.FunctionDef, cls) -> ast.FunctionDef:
+    """Write the charges and long hub accesses of woven method ``fn`` (of class ``cls``) out in its body."""
+    prologue = []
+    args = fn.args.posonlyargs + fn.args.args
+    if args and args[0].arg == "self":
+        hub = _Hub(cls, "self")
+        fn.body = [n for s in fn.body for n in _as_list(hub.visit(s))]
+        if hub.used:
+            prologue += _parse(f"{_L}, {_LS} = {_RT}.L, {_RT}.Ls")
+            prologue += [_parse(f"{local} = {src}")[0] for local, src in hub.used.items()]
+    fn.body, charged = _inline_body(fn.body)
+    if charged:
+        prologue = _parse(f"{_COG} = {_RT}.cog\n{_PHASE} = {_COG}.hub_phase") + prologue
+    anchor = fn.body[0]
+    fn.body = [ast.copy_location(s, anchor) for s in prologue] + fn.body
+    return ast.fix_missing_locations(fn)
+
+
+def _as_list(x) -> list:
+    return x if isinstance(x, list) else [x]
+
+
+def install(namespace: dict) -> None:
+    """Put the names inlined code uses into a generated module's namespace."""
+    from . import runtime
+    namespace[_RT] = spin.RT
+    namespace[_PAUSE] = runtime.pause_tick
+    namespace[_PAUSE_AT] = runtime.pause_tick_at
+
+
+GLOBALS = (_RT, _PAUSE, _PAUSE_AT)

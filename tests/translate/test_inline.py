@@ -1,0 +1,71 @@
+"""The woven methods write their charges and long hub accesses out (spinemu.translate.inline), computing the same."""
+from __future__ import annotations
+
+import ast
+import os
+import textwrap
+
+from spinemu.translate import _write, spin
+from spinemu.translate.inline import inline_method, install
+from spinemu.translate.program import translate_program
+from spinemu.translate.weave import load_package, prepare
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+BENCH = os.path.join(ROOT, "tests", "data", "translate", "cpu_bench.spin")
+
+ACCESSES = textwrap.dedent("""
+    def f(self, i, v):
+        self.arr[i] = v
+        self.arr[i + 1] += self.arr[i] * 3
+        self.x = self.arr[i + 1] - 1
+        self.x -= v
+        self.w = self.x
+        return self.x, self.arr[i], self.arr[i + 1], self.w
+""")
+
+
+class _Obj(spin.Object):
+    x = spin.Long(0)
+    arr = spin.Long(4, 4)
+    w = spin.Word(20)
+
+
+def _both(vbase: int):
+    """``f`` run plain and inlined on an object at ``vbase``: (results, hub bytes) each."""
+    out = []
+    for inline in (False, True):
+        fn = ast.parse(ACCESSES).body[0]
+        if inline:
+            fn = inline_method(fn, _Obj)
+        ns: dict = {}
+        install(ns)
+        exec(compile(ast.Module([fn], []), "<test>", "exec"), ns)
+        spin.RT.attach(bytearray(0x10000))
+        obj = _Obj()
+        obj._vbase = vbase
+        results = [ns["f"](obj, i, v) for i, v in ((0, 5), (1, -7), (2, 0x7FFFFFFF), (-1, 3))]
+        out.append((results, bytes(spin.RT.mem)))
+    return out
+
+
+def test_inlined_long_accesses_read_and_write_what_the_properties_do():
+    plain, fast = _both(0x100)
+    assert plain == fast
+    assert any(plain[1])        # the stores reached the hub
+
+
+def test_inlined_stores_past_8000_are_dropped_as_the_properties_drop_them():
+    plain, fast = _both(0x7FF0)     # x below $8000, arr[3] and past it above
+    assert plain == fast
+    assert not any(plain[1][0x8000:])
+
+
+def test_woven_benchmark_methods_call_no_charge_or_accessor(tmp_path):
+    modules, compiled = translate_program(BENCH)
+    _write(modules, compiled, tmp_path)
+    top = load_package(tmp_path).TOP
+    prepare(top)
+    code = top.main.__code__
+    assert "__spin_tick" not in code.co_names and "__spin_tick_at" not in code.co_names
+    assert "total" not in code.co_names                 # self.total: read from the hub view
+    assert "__spin_pause_tick" in code.co_names         # the hand-over to the scheduler is still there
