@@ -109,6 +109,10 @@ def _divide(a: int, b: int) -> tuple:
 
 def div(a: int, b: int) -> int:
     """Spin ``a / b``: signed, rounded toward zero; dividing by zero gives 0."""
+    if 0 <= a <= POSX and 0 < b <= POSX:       # both non-negative longs: the common case, short (hot path)
+        if RT.div_extra is not None:
+            RT.cog.t += RT.div_extra[b.bit_length()]
+        return a // b
     a, b = _divide(a, b)
     if b == 0:
         return 0
@@ -118,6 +122,10 @@ def div(a: int, b: int) -> int:
 
 def mod(a: int, b: int) -> int:
     """Spin ``a // b``: the remainder, with the sign of ``a``; modulo zero gives 0."""
+    if 0 <= a <= POSX and 0 < b <= POSX:       # as in div
+        if RT.div_extra is not None:
+            RT.cog.t += RT.div_extra[b.bit_length()]
+        return a % b
     a, b = _divide(a, b)
     if b == 0:
         return 0

@@ -69,3 +69,23 @@ def test_woven_benchmark_methods_call_no_charge_or_accessor(tmp_path):
     assert "__spin_tick" not in code.co_names and "__spin_tick_at" not in code.co_names
     assert "total" not in code.co_names                 # self.total: read from the hub view
     assert "__spin_pause_tick" in code.co_names         # the hand-over to the scheduler is still there
+
+
+def test_div_and_mod_fast_path_gives_spins_values_and_charges_the_divisors_loop():
+    class FakeCog:
+        t = 0
+    saved = spin.RT.cog, spin.RT.div_extra
+    spin.RT.cog, spin.RT.div_extra = FakeCog(), list(range(100, 133))
+    try:
+        edge = (0, 1, 7, 1000, 0x7FFFFFFF, 0x80000000, 0xFFFFFFFF, 0x1_0000_0005, -1, -7, -0x80000000)
+        for a in edge:
+            for b in edge:
+                sa, sb = spin.wrap(a), spin.wrap(b)
+                q = 0 if sb == 0 else spin.wrap(abs(sa) // abs(sb) * (-1 if (sa < 0) != (sb < 0) else 1))
+                r = 0 if sb == 0 else abs(sa) % abs(sb) * (-1 if sa < 0 else 1)
+                for op, want in ((spin.div, q), (spin.mod, r)):
+                    before = spin.RT.cog.t
+                    assert op(a, b) == want, (op.__name__, a, b)
+                    assert spin.RT.cog.t - before == 100 + abs(sb).bit_length()
+    finally:
+        spin.RT.cog, spin.RT.div_extra = saved
