@@ -179,9 +179,63 @@ class _Hub(ast.NodeTransformer):
 
 
 # ----------------------------------------------------------------------------- the pass
+# spin helpers that neither charge cycles nor touch the cog (a statement using only these is "neutral")
+_PURE = {"wrap", "u32", "flag", "shr", "rol", "ror", "rev", "mul_high", "sqrt", "decode", "sign_extend_byte",
+         "sign_extend_word", "random_forward", "random_reverse", "within", "span", "repeat_step"}
+_OWN = (_COG, _T, _PHASE)
+# what else a neutral statement may hold (nothing that jumps, defines code or suspends)
+_PLAIN = (ast.Assign, ast.AugAssign, ast.If, ast.Pass, ast.Constant, ast.Attribute, ast.Subscript, ast.BinOp,
+          ast.UnaryOp, ast.BoolOp, ast.Compare, ast.IfExp, ast.Tuple, ast.List, ast.Slice, ast.expr_context,
+          ast.operator, ast.unaryop, ast.cmpop, ast.boolop)
+
+
+def _neutral(stmt) -> bool:
+    """Does ``stmt`` leave the cog's cycle counter alone, never hand over and never jump (values and hub memory)?"""
+    if not isinstance(stmt, (ast.Assign, ast.AugAssign, ast.If, ast.Pass)):
+        return False
+    for n in ast.walk(stmt):
+        if isinstance(n, ast.Call):
+            f = n.func
+            pure = (isinstance(f, ast.Name) and f.id == "wrap") or (
+                isinstance(f, ast.Attribute) and isinstance(f.value, ast.Name) and f.value.id == "spin"
+                and f.attr in _PURE)
+            if not pure or n.keywords:
+                return False
+        elif isinstance(n, ast.Name):
+            if n.id == "cog" or n.id in _OWN:
+                return False
+        elif not isinstance(n, _PLAIN):
+            return False
+    return True
+
+
+def _tick_lines(helper: str, args: list, known, store: bool) -> list:
+    """A charge written out.  ``known``: the cost of the charge just before it, with only neutral
+    statements between (its fetch alignment is then a constant, and its store of the cycle counter
+    was left to this one); ``store``: write the counter now (else the next charge does)."""
+    c, t = _COG, _T
+    if known is None:
+        head = f"{t} = {c}.t + 12\n{t} += ({_PHASE} - {t}) & 15\n"
+        catch_up = ""
+    else:
+        d = 12 + ((-known - 12) & 15)           # t was aligned, the counter is t + known: t + known + d is aligned
+        head = f"{t} += {known + d}\n"
+        catch_up = f"    {c}.t = {t} - {d}\n"   # what the counter holds in the bytecode engine at the hand-over
+    if helper == "__spin_tick":
+        k, = args
+        src = f"{head}if {t} >= {_RT}.limit:\n{catch_up}    {_PAUSE}({t})\n"
+    else:
+        k, access, last = (list(args) + [-1])[:3]
+        src = (f"{head}if {t} + {access} >= {_RT}.limit or {t} + {last} >= {_RT}.final:\n"
+               f"{catch_up}    {_PAUSE_AT}({t}, {access})\n")
+    if store:
+        src += f"{c}.t = {t} + {k}\n"
+    return _parse(src)
+
+
 def _inline_body(stmts: list) -> tuple:
     """Charge statements written out in ``stmts`` (and nested bodies); returns (new list, any inlined?)."""
-    out, any_ = [], False
+    any_ = False
     for s in stmts:
         for field in ("body", "orelse", "finalbody"):
             body = getattr(s, field, None)
@@ -194,12 +248,31 @@ def _inline_body(stmts: list) -> tuple:
             for h in s.handlers:
                 h.body, hit = _inline_body(h.body)
                 any_ |= hit
-        found = _charge(s)
+    charges = [_charge(s) for s in stmts]
+    neutral = [c is None and _neutral(s) for s, c in zip(stmts, charges)]
+    out = []
+    known = None            # the cost since the last aligned fetch (its counter store still to do), or None
+    for i, (s, found) in enumerate(zip(stmts, charges)):
         if found is None:
+            if not neutral[i]:
+                known = None
             out.append(s)
             continue
         any_ = True
-        out.extend(ast.fix_missing_locations(ast.copy_location(n, s)) for n in _charge_lines(*found))
+        helper, args = found
+        if helper == "__spin_add":
+            if known is not None:
+                known += args[0]
+                continue
+            lines = _charge_lines(helper, args)
+        else:
+            j = i + 1
+            while j < len(stmts) and neutral[j]:
+                j += 1
+            store = not (j < len(stmts) and charges[j] is not None)
+            lines = _tick_lines(helper, args, known, store)
+            known = None if store else args[0]
+        out.extend(ast.fix_missing_locations(ast.copy_location(n, s)) for n in lines)
     return out, any_
 
 

@@ -5,7 +5,7 @@ import ast
 import os
 import textwrap
 
-from spinemu.translate import _write, spin
+from spinemu.translate import _write, runtime, spin
 from spinemu.translate.inline import inline_method, install
 from spinemu.translate.program import translate_program
 from spinemu.translate.weave import load_package, prepare
@@ -89,3 +89,58 @@ def test_div_and_mod_fast_path_gives_spins_values_and_charges_the_divisors_loop(
                     assert spin.RT.cog.t - before == 100 + abs(sb).bit_length()
     finally:
         spin.RT.cog, spin.RT.div_extra = saved
+
+
+CHARGES = textwrap.dedent("""
+    def f(self, n):
+        __spin_tick(276)
+        x = n
+        __spin_tick_at(100, 8, 50)
+        while True:
+            __spin_tick(36)
+            old = n
+            n = wrap(n - 1)
+            if old == 0:
+                break
+            __spin_tick(44)
+            x = x + 3
+            __spin_add(4)
+            __spin_tick_at(52, 16)
+            __spin_tick(24)
+        __spin_tick(20)
+        return x
+""")
+
+
+class _Cog:
+    id, hub_phase, t = 3, 10, 5
+
+
+def _charged_run(inline: bool, step: int):
+    """``CHARGES`` run plain or inlined; every hand-over to the scheduler moves the limit ``step`` on."""
+    fn = ast.parse(CHARGES).body[0]
+    if inline:
+        fn = inline_method(fn, _Obj)
+    ns = {"__spin_tick": runtime.tick, "__spin_tick_at": runtime.tick_at, "__spin_add": runtime.add, "wrap": spin.wrap}
+    install(ns)
+    exec(compile(ast.Module([fn], []), "<test>", "exec"), ns)
+    RT, saved = spin.RT, (spin.RT.cog, spin.RT.limit, spin.RT.final, spin.RT.pause, spin.RT.keys)
+    events = []
+
+    def pause():
+        events.append((RT.cog.t, RT.keys[3]))
+        RT.limit += step
+
+    RT.cog, RT.limit, RT.final, RT.pause, RT.keys = _Cog(), step, 3000, pause, [None] * 8
+    try:
+        x = ns["f"](_Obj(), 30)
+        return x, RT.cog.t, events
+    finally:
+        RT.cog, RT.limit, RT.final, RT.pause, RT.keys = saved
+
+
+def test_inlined_charges_hand_over_at_the_same_cycles_with_the_same_counter():
+    for step in (7, 50, 333, 1000):
+        plain = _charged_run(False, step)
+        assert _charged_run(True, step) == plain
+        assert plain[2]                     # it did hand over
