@@ -33,6 +33,7 @@ _COG, _PHASE, _T, _RT = "__spin_c", "__spin_p", "__spin_t", "__spin_RT"
 _L, _LS = "__spin_L", "__spin_Ls"
 _PAUSE, _PAUSE_AT = "__spin_pause_tick", "__spin_pause_tick_at"
 _ADDR, _VALUE = "__spin_a", "__spin_v"
+_DIVIDEND, _DX = "__spin_m", "__spin_dx"
 _STORE_AT = f"if {_ADDR} < 0x8000:\n    {_L}[{_ADDR} >> 2] = {_VALUE} & 0xFFFFFFFF"    # as spin._Longs.__setitem__
 
 
@@ -266,14 +267,39 @@ def _inline_body(stmts: list) -> tuple:
                 continue
             lines = _charge_lines(helper, args)
         else:
-            j = i + 1
-            while j < len(stmts) and neutral[j]:
+            j = i + 1           # the next charge that aligns, past neutral statements and unaligned charges
+            while j < len(stmts) and (neutral[j] or (charges[j] is not None and charges[j][0] == "__spin_add")):
                 j += 1
             store = not (j < len(stmts) and charges[j] is not None)
             lines = _tick_lines(helper, args, known, store)
             known = None if store else args[0]
         out.extend(ast.fix_missing_locations(ast.copy_location(n, s)) for n in lines)
     return out, any_
+
+
+class _Divisions(ast.NodeTransformer):
+    """``x = spin.mod(e, C)`` / ``spin.div`` by a positive constant: :func:`spin.mod`'s short path written out."""
+
+    def __init__(self):
+        self.hit = False
+
+    def visit_Assign(self, node):
+        v = node.value
+        if not (len(node.targets) == 1 and isinstance(node.targets[0], ast.Name) and isinstance(v, ast.Call)
+                and isinstance(v.func, ast.Attribute) and isinstance(v.func.value, ast.Name)
+                and v.func.value.id == "spin" and v.func.attr in ("mod", "div") and len(v.args) == 2
+                and not v.keywords and isinstance(v.args[1], ast.Constant) and type(v.args[1].value) is int
+                and 0 < v.args[1].value <= spin.POSX):
+            return node
+        self.hit = True
+        x, b = node.targets[0].id, v.args[1].value
+        op = "%" if v.func.attr == "mod" else "//"
+        keep = ast.Assign([_name(_DIVIDEND, True)], v.args[0])
+        rest = _parse(f"if 0 <= {_DIVIDEND} <= {spin.POSX}:\n"
+                      f"    {_COG}.t += {_DX}[{b.bit_length()}]\n"
+                      f"    {x} = {_DIVIDEND} {op} {b}\n"
+                      f"else:\n    {x} = spin.{v.func.attr}({_DIVIDEND}, {b})")
+        return [ast.fix_missing_locations(ast.copy_location(n, node)) for n in [keep] + rest]
 
 
 def inline_method(fn: ast.FunctionDef, cls) -> ast.FunctionDef:
@@ -288,6 +314,10 @@ def inline_method(fn: ast.FunctionDef, cls) -> ast.FunctionDef:
             prologue += [_parse(f"{local} = {src}")[0] for local, src in hub.used.items()]
     fn.body, charged = _inline_body(fn.body)
     if charged:
+        divisions = _Divisions()
+        fn.body = [n for s in fn.body for n in _as_list(divisions.visit(s))]
+        if divisions.hit:
+            prologue = _parse(f"{_DX} = {_RT}.div_extra") + prologue
         prologue = _parse(f"{_COG} = {_RT}.cog\n{_PHASE} = {_COG}.hub_phase") + prologue
     anchor = fn.body[0]
     fn.body = [ast.copy_location(s, anchor) for s in prologue] + fn.body

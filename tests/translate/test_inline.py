@@ -105,6 +105,9 @@ CHARGES = textwrap.dedent("""
             __spin_tick(44)
             x = x + 3
             __spin_add(4)
+            x = spin.mod(x * 3 + n, 1000)
+            y = spin.div(x - 500, 7)
+            x = x + y
             __spin_tick_at(52, 16)
             __spin_tick(24)
         __spin_tick(20)
@@ -121,10 +124,12 @@ def _charged_run(inline: bool, step: int):
     fn = ast.parse(CHARGES).body[0]
     if inline:
         fn = inline_method(fn, _Obj)
-    ns = {"__spin_tick": runtime.tick, "__spin_tick_at": runtime.tick_at, "__spin_add": runtime.add, "wrap": spin.wrap}
+    ns = {"__spin_tick": runtime.tick, "__spin_tick_at": runtime.tick_at, "__spin_add": runtime.add, "wrap": spin.wrap,
+          "spin": spin}
     install(ns)
     exec(compile(ast.Module([fn], []), "<test>", "exec"), ns)
-    RT, saved = spin.RT, (spin.RT.cog, spin.RT.limit, spin.RT.final, spin.RT.pause, spin.RT.keys)
+    RT = spin.RT
+    saved = RT.cog, RT.limit, RT.final, RT.pause, RT.keys, RT.div_extra
     events = []
 
     def pause():
@@ -132,11 +137,12 @@ def _charged_run(inline: bool, step: int):
         RT.limit += step
 
     RT.cog, RT.limit, RT.final, RT.pause, RT.keys = _Cog(), step, 3000, pause, [None] * 8
+    RT.div_extra = [3 * n + 1 for n in range(33)]
     try:
         x = ns["f"](_Obj(), 30)
         return x, RT.cog.t, events
     finally:
-        RT.cog, RT.limit, RT.final, RT.pause, RT.keys = saved
+        RT.cog, RT.limit, RT.final, RT.pause, RT.keys, RT.div_extra = saved
 
 
 def test_inlined_charges_hand_over_at_the_same_cycles_with_the_same_counter():
