@@ -119,11 +119,21 @@ class _Cog:
     id, hub_phase, t = 3, 10, 5
 
 
-def _charged_run(inline: bool, step: int):
-    """``CHARGES`` run plain or inlined; every hand-over to the scheduler moves the limit ``step`` on."""
-    fn = ast.parse(CHARGES).body[0]
+class _Caller(_Obj):
+    def g(self):
+        runtime.tick(40)
+        spin.RT.cog.t += 3
+        return 1
+
+
+def _charged_run(inline: bool, step: int, source: str = CHARGES, final: int = 3000):
+    """``source`` (``f``) run plain or inlined; every hand-over to the scheduler moves the limit ``step`` on.
+
+    Returns f's result, the cog's counter after it, the hand-overs (counter, key) and the hub.
+    """
+    fn = ast.parse(source).body[0]
     if inline:
-        fn = inline_method(fn, _Obj)
+        fn = inline_method(fn, _Caller)
     ns = {"__spin_tick": runtime.tick, "__spin_tick_at": runtime.tick_at, "__spin_add": runtime.add, "wrap": spin.wrap,
           "spin": spin}
     install(ns)
@@ -136,11 +146,12 @@ def _charged_run(inline: bool, step: int):
         events.append((RT.cog.t, RT.keys[3]))
         RT.limit += step
 
-    RT.cog, RT.limit, RT.final, RT.pause, RT.keys = _Cog(), step, 3000, pause, [None] * 8
+    RT.cog, RT.limit, RT.final, RT.pause, RT.keys = _Cog(), step, final, pause, [None] * 8
     RT.div_extra = [3 * n + 1 for n in range(33)]
+    RT.attach(bytearray(0x10000))
     try:
-        x = ns["f"](_Obj(), 30)
-        return x, RT.cog.t, events
+        x = ns["f"](_Caller(), 30)
+        return x, RT.cog.t, events, bytes(RT.mem[:64])
     finally:
         RT.cog, RT.limit, RT.final, RT.pause, RT.keys, RT.div_extra = saved
 
@@ -150,3 +161,43 @@ def test_inlined_charges_hand_over_at_the_same_cycles_with_the_same_counter():
         plain = _charged_run(False, step)
         assert _charged_run(True, step) == plain
         assert plain[2]                     # it did hand over
+
+
+def _random_body(rng, depth: int, in_for: bool) -> list:
+    """Random statements: charges, neutral ones, calls and divisions, nested ifs and loops with break/continue."""
+    out = []
+    for _ in range(rng.randint(1, 7)):
+        r = rng.random()
+        if r < 0.35:
+            k = rng.choice((4, 8, 36, 276, 1252, 23))
+            out.append(rng.choice((f"__spin_tick({k})", f"__spin_tick_at({k}, {rng.choice((0, 8, 400))})",
+                                   f"__spin_tick_at({k}, 16, {k - 4})", f"__spin_add({rng.choice((4, -16, 7))})")))
+        elif r < 0.6:
+            out.append(rng.choice(("x = wrap(x * 3 + n)", "self.arr[x & 3] = x", "self.x += x", "x = x ^ self.x",
+                                   "self.arr[1] -= self.arr[x & 3]")))
+        elif r < 0.72:
+            out.append(rng.choice(("x = spin.mod(x + 7, 13)", "x = spin.div(x, 3)", "x = spin.div(x, -3)",
+                                   "x += self.g()")))
+        elif depth < 3 and r < 0.82:
+            out.append(f"if x & {rng.choice((1, 2, 4))}:")
+            out += ["    " + line for line in _random_body(rng, depth + 1, in_for)]
+        elif depth < 3 and r < 0.91:
+            out.append(f"for k{depth} in range({rng.randint(0, 3)}):")
+            out += ["    " + line for line in _random_body(rng, depth + 1, True)]
+        elif depth < 3:
+            out += [f"w{depth} = 0", "while True:", f"    w{depth} += 1", f"    if w{depth} > 3:", "        break"]
+            out += ["    " + line for line in _random_body(rng, depth + 1, in_for)]
+        elif in_for:
+            out += [rng.choice(("if x & 8:", "if x & 16:")), rng.choice(("    continue", "    break"))]
+    return out or ["x = x + 1"]
+
+
+def test_inlined_charges_match_the_runtimes_on_random_methods():
+    import random
+    rng = random.Random(7)
+    for case in range(150):
+        body = _random_body(rng, 0, False)
+        source = "def f(self, n):\n    x = n\n" + "".join(f"    {line}\n" for line in body) + "    return x\n"
+        for step, final in ((30, 1 << 40), (401, 2000)):
+            plain = _charged_run(False, step, source, final)
+            assert _charged_run(True, step, source, final) == plain, source
