@@ -210,18 +210,21 @@ def _neutral(stmt) -> bool:
     return True
 
 
-def _tick_lines(helper: str, args: list, known, store: bool) -> list:
+def _tick_lines(helper: str, args: list, known, store: bool, entry=None) -> list:
     """A charge written out.  ``known``: the cost of the charge just before it, with only neutral
     statements between (its fetch alignment is then a constant, and its store of the cycle counter
-    was left to this one); ``store``: write the counter now (else the next charge does)."""
+    was left to this one); ``store``: write the counter now (else the next charge does);
+    ``entry``: the counter is stored and aligns ``entry`` cycles on (a loop's head, see :func:`_loop_entry`)."""
     c, t = _COG, _T
-    if known is None:
-        head = f"{t} = {c}.t + 12\n{t} += ({_PHASE} - {t}) & 15\n"
-        catch_up = ""
-    else:
+    catch_up = ""
+    if known is not None:
         d = 12 + ((-known - 12) & 15)           # t was aligned, the counter is t + known: t + known + d is aligned
         head = f"{t} += {known + d}\n"
         catch_up = f"    {c}.t = {t} - {d}\n"   # what the counter holds in the bytecode engine at the hand-over
+    elif entry is not None:
+        head = f"{t} = {c}.t + {entry}\n"
+    else:
+        head = f"{t} = {c}.t + 12\n{t} += ({_PHASE} - {t}) & 15\n"
     if helper == "__spin_tick":
         k, = args
         src = f"{head}if {t} >= {_RT}.limit:\n{catch_up}    {_PAUSE}({t})\n"
@@ -234,29 +237,68 @@ def _tick_lines(helper: str, args: list, known, store: bool) -> list:
     return _parse(src)
 
 
-def _inline_body(stmts: list) -> tuple:
-    """Charge statements written out in ``stmts`` (and nested bodies); returns (new list, any inlined?)."""
+def _aligned_cost(charges: list, neutral: list, i: int):
+    """The cost of the aligned charge that the statements before index ``i`` end with (only neutral ones after it), or None."""
+    while i > 0 and neutral[i - 1]:
+        i -= 1
+    if i == 0 or charges[i - 1] is None or charges[i - 1][0] == "__spin_add":
+        return None
+    return charges[i - 1][1][0]
+
+
+def _loop_entry(loop, charges: list, neutral: list, i: int):
+    """For loop statement ``stmts[i]``: how far past the stored counter its body's first fetch aligns, or None.
+
+    Known when both ways into the body (from before the loop, and back from
+    its end) come from an aligned charge of costs that leave the same
+    alignment, with only neutral statements (and a neutral ``range``/test)
+    between, and no ``continue`` jumps back from elsewhere.
+    """
+    if isinstance(loop, ast.For):
+        it = loop.iter
+        if not (isinstance(it, ast.Call) and isinstance(it.func, ast.Name) and it.func.id == "range"
+                and not it.keywords and _neutral(ast.Assign([loop.target], ast.Tuple(list(it.args), ast.Load())))):
+            return None
+    elif not (isinstance(loop, ast.While) and _neutral(ast.Assign([ast.Name("_", ast.Store())], loop.test))):
+        return None
+    if any(isinstance(n, ast.Continue) for n in ast.walk(loop)):
+        return None
+    body_charges = [_charge(s) for s in loop.body]
+    body_neutral = [c is None and _neutral(s) for s, c in zip(loop.body, body_charges)]
+    costs = (_aligned_cost(charges, neutral, i), _aligned_cost(body_charges, body_neutral, len(loop.body)))
+    if None in costs:
+        return None
+    d = {12 + ((-k - 12) & 15) for k in costs}
+    return d.pop() if len(d) == 1 else None
+
+
+def _inline_body(stmts: list, entry=None) -> tuple:
+    """Charge statements written out in ``stmts`` (and nested bodies); returns (new list, any inlined?).
+
+    ``entry``: the alignment of the first fetch if the list starts a loop's body (:func:`_loop_entry`).
+    """
     any_ = False
-    for s in stmts:
+    charges = [_charge(s) for s in stmts]
+    neutral = [c is None and _neutral(s) for s, c in zip(stmts, charges)]
+    for i, s in enumerate(stmts):
         for field in ("body", "orelse", "finalbody"):
             body = getattr(s, field, None)
             if isinstance(body, list) and body and isinstance(body[0], ast.stmt) \
                     and not isinstance(s, (ast.FunctionDef, ast.ClassDef)):
-                new, hit = _inline_body(body)
+                head = _loop_entry(s, charges, neutral, i) if field == "body" else None
+                new, hit = _inline_body(body, head)
                 setattr(s, field, new)
                 any_ |= hit
         if isinstance(s, ast.Try):
             for h in s.handlers:
                 h.body, hit = _inline_body(h.body)
                 any_ |= hit
-    charges = [_charge(s) for s in stmts]
-    neutral = [c is None and _neutral(s) for s, c in zip(stmts, charges)]
     out = []
     known = None            # the cost since the last aligned fetch (its counter store still to do), or None
     for i, (s, found) in enumerate(zip(stmts, charges)):
         if found is None:
             if not neutral[i]:
-                known = None
+                known = entry = None
             out.append(s)
             continue
         any_ = True
@@ -266,13 +308,15 @@ def _inline_body(stmts: list) -> tuple:
                 known += args[0]
                 continue
             lines = _charge_lines(helper, args)
+            entry = None
         else:
             j = i + 1           # the next charge that aligns, past neutral statements and unaligned charges
             while j < len(stmts) and (neutral[j] or (charges[j] is not None and charges[j][0] == "__spin_add")):
                 j += 1
             store = not (j < len(stmts) and charges[j] is not None)
-            lines = _tick_lines(helper, args, known, store)
+            lines = _tick_lines(helper, args, known, store, entry)
             known = None if store else args[0]
+            entry = None
         out.extend(ast.fix_missing_locations(ast.copy_location(n, s)) for n in lines)
     return out, any_
 

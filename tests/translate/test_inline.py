@@ -163,6 +163,13 @@ def test_inlined_charges_hand_over_at_the_same_cycles_with_the_same_counter():
         assert plain[2]                     # it did hand over
 
 
+def _loop_ticks(rng) -> tuple:
+    """Often a charge just before a loop and one ending its body (the loop's head may then align by a constant)."""
+    if rng.random() < 0.4:
+        return [], []
+    return [f"__spin_tick({rng.choice((4, 20, 36, 23))})"], [f"__spin_tick({rng.choice((4, 20, 276, 23))})"]
+
+
 def _random_body(rng, depth: int, in_for: bool) -> list:
     """Random statements: charges, neutral ones, calls and divisions, nested ifs and loops with break/continue."""
     out = []
@@ -182,11 +189,15 @@ def _random_body(rng, depth: int, in_for: bool) -> list:
             out.append(f"if x & {rng.choice((1, 2, 4))}:")
             out += ["    " + line for line in _random_body(rng, depth + 1, in_for)]
         elif depth < 3 and r < 0.91:
-            out.append(f"for k{depth} in range({rng.randint(0, 3)}):")
-            out += ["    " + line for line in _random_body(rng, depth + 1, True)]
+            pre, post = _loop_ticks(rng)
+            out += pre + [f"for k{depth} in range({rng.randint(0, 3)}):"]
+            out += ["    " + line for line in _random_body(rng, depth + 1, True) + post]
         elif depth < 3:
-            out += [f"w{depth} = 0", "while True:", f"    w{depth} += 1", f"    if w{depth} > 3:", "        break"]
-            out += ["    " + line for line in _random_body(rng, depth + 1, in_for)]
+            pre, post = _loop_ticks(rng)
+            out += [f"w{depth} = 0"] + pre + rng.choice(([f"while w{depth} < 3:", f"    w{depth} += 1"],
+                                                          ["while True:", f"    w{depth} += 1",
+                                                           f"    if w{depth} > 3:", "        break"]))
+            out += ["    " + line for line in _random_body(rng, depth + 1, in_for) + post]
         elif in_for:
             out += [rng.choice(("if x & 8:", "if x & 16:")), rng.choice(("    continue", "    break"))]
     return out or ["x = x + 1"]
