@@ -34,7 +34,6 @@ _L, _LS = "__spin_L", "__spin_Ls"
 _PAUSE, _PAUSE_AT = "__spin_pause_tick", "__spin_pause_tick_at"
 _ADDR, _VALUE = "__spin_a", "__spin_v"
 _DIVIDEND, _DX = "__spin_m", "__spin_dx"
-_STORE_AT = f"if {_ADDR} < 0x8000:\n    {_L}[{_ADDR} >> 2] = {_VALUE} & 0xFFFFFFFF"    # as spin._Longs.__setitem__
 
 
 def _name(n: str, store: bool = False) -> ast.Name:
@@ -74,109 +73,133 @@ def _charge_lines(helper: str, args: list) -> list:
                   f"    {_PAUSE_AT}({t}, {access})\n{c}.t = {t} + {k}")
 
 
-# ----------------------------------------------------------------------------- hub longs
-def _long_var(cls, name: str):
-    """``('scalar' | 'array', descriptor)`` if ``cls.name`` is a long VAR/DAT variable, else None."""
+# ----------------------------------------------------------------------------- hub variables
+# bytes per element -> (local read view, local write view, RT's views, address shift, store mask)
+_VIEWS = {4: (_LS, _L, "Ls", "L", 2, 0xFFFFFFFF),
+          2: ("__spin_W", "__spin_W", "W", "W", 1, 0xFFFF),
+          1: ("__spin_B", "__spin_B", "mem", "mem", 0, 0xFF)}
+
+
+def _hub_var(cls, name: str):
+    """``('scalar' | 'array', descriptor)`` if ``cls.name`` is a VAR/DAT variable, else None."""
     for klass in cls.__mro__:
         if name in klass.__dict__:
             d = klass.__dict__[name]
-            if isinstance(d, spin._Scalar) and d.mem is spin.long:
+            if isinstance(d, spin._Scalar) and d.mem.size in _VIEWS:
                 return "scalar", d
-            if isinstance(d, spin._Elements) and d.mem is spin.long:
+            if isinstance(d, spin._Elements) and d.mem.size in _VIEWS:
                 return "array", d
             return None
     return None
 
 
+def _shifted(e, shift: int):
+    return ast.BinOp(e, ast.RShift(), ast.Constant(shift)) if shift else e
+
+
 class _Hub(ast.NodeTransformer):
-    """Rewrites the long variables' reads and stores; remembers which locals the method's start must bind."""
+    """Rewrites the VAR/DAT variables' reads and stores; remembers which locals the method's start must bind."""
 
     def __init__(self, cls, this: str):
         self.cls, self.this = cls, this
         self.used: dict = {}        # local name -> its binding's source text
+        self.views: set = set()     # element sizes whose views the method uses
 
     def _var(self, node, kind: str):
-        """The local holding ``self.x``'s long index (scalar) or hub address (array), or None."""
+        """``(local, size)``: the local holding ``self.x``'s element index (scalar) or hub address (array), or None."""
         if not (isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == self.this):
             return None
-        found = _long_var(self.cls, node.attr)
+        found = _hub_var(self.cls, node.attr)
         if found is None or found[0] != kind:
             return None
-        local = f"__spin_{kind[0]}_{node.attr}"
         d = found[1]
+        size = d.mem.size
+        local = f"__spin_{kind[0]}_{node.attr}"
         base = f"{self.this}.{'_pbase' if d.dat else '_vbase'}"
-        self.used[local] = f"({base} + {d.offset}) >> 2" if kind == "scalar" else f"{self.this}.{node.attr}.addr"
-        return local
+        shift = _VIEWS[size][4]
+        self.used[local] = (f"({base} + {d.offset}) >> {shift}" if shift else f"{base} + {d.offset}") \
+            if kind == "scalar" else f"{self.this}.{node.attr}.addr"
+        self.views.add(size)
+        return local, size
 
-    def _index(self, sub) -> ast.expr:
-        """``((addr + (i << 2)) & 0xFFFF)`` for ``self.a[i]`` (None if it is not a long array)."""
-        local = self._var(sub.value, "array")
-        if local is None or isinstance(sub.slice, ast.Slice):
+    def _address(self, sub):
+        """``((addr + (i << shift)) & 0xFFFF, size)`` for array element ``self.a[i]``, or None."""
+        found = self._var(sub.value, "array")
+        if found is None or isinstance(sub.slice, ast.Slice):
             return None
+        local, size = found
         i = self.visit(sub.slice)
-        shifted = ast.BinOp(i, ast.LShift(), ast.Constant(2))
-        return ast.BinOp(ast.BinOp(_name(local), ast.Add(), shifted), ast.BitAnd(), ast.Constant(0xFFFF))
+        shift = _VIEWS[size][4]
+        if shift:
+            i = ast.BinOp(i, ast.LShift(), ast.Constant(shift))
+        return ast.BinOp(ast.BinOp(_name(local), ast.Add(), i), ast.BitAnd(), ast.Constant(0xFFFF)), size
+
+    def _read(self, size: int, index) -> ast.Subscript:
+        return ast.Subscript(_name(_VIEWS[size][0]), index, ast.Load())
+
+    def _store_lines(self, size: int, index: str, limit: int) -> list:
+        """``if index < limit: view[index] = __spin_v & mask``."""
+        view, mask = _VIEWS[size][1], _VIEWS[size][5]
+        return _parse(f"if {index} < {limit}:\n    {view}[{index}] = {_VALUE} & {mask}")
 
     def visit_Attribute(self, node):
         if isinstance(node.ctx, ast.Load):
-            local = self._var(node, "scalar")
-            if local is not None:
-                return ast.copy_location(ast.Subscript(_name(_LS), _name(local), ast.Load()), node)
+            found = self._var(node, "scalar")
+            if found is not None:
+                return ast.copy_location(self._read(found[1], _name(found[0])), node)
         return self.generic_visit(node)
 
     def visit_Subscript(self, node):
         if isinstance(node.ctx, ast.Load):
-            addr = self._index(node)
-            if addr is not None:
-                index = ast.BinOp(addr, ast.RShift(), ast.Constant(2))
-                return ast.copy_location(ast.Subscript(_name(_LS), index, ast.Load()), node)
+            found = self._address(node)
+            if found is not None:
+                addr, size = found
+                return ast.copy_location(self._read(size, _shifted(addr, _VIEWS[size][4])), node)
         return self.generic_visit(node)
 
-    def _store(self, target, value_stmts: list) -> list:
-        """Statements storing ``__spin_v`` into ``target`` (a long scalar or array element), or None."""
+    def _rewrite(self, node, target, value, op=None):
+        """The statements for ``target = value`` (``op``: ``target op= value``), or None if ``target`` is not a hub variable."""
         if isinstance(target, ast.Attribute):
-            local = self._var(target, "scalar")
-            if local is None:
+            found = self._var(target, "scalar")
+            if found is None:
                 return None
-            text = f"if {local} < 0x2000:\n    {_L}[{local}] = {_VALUE} & 0xFFFFFFFF"
-            return value_stmts + _parse(text)
-        return None
+            local, size = found
+            if op is not None:
+                value = ast.BinOp(self._read(size, _name(local)), op, value)
+            out = [ast.Assign([_name(_VALUE, True)], value)]
+            out += self._store_lines(size, local, 0x8000 >> _VIEWS[size][4])
+        elif isinstance(target, ast.Subscript):
+            found = self._address(target)
+            if found is None:
+                return None
+            addr, size = found
+            shift = _VIEWS[size][4]
+            at = ast.Assign([_name(_ADDR, True)], addr)
+            if op is not None:          # the element is read before the value is computed
+                value = ast.BinOp(self._read(size, _shifted(_name(_ADDR), shift)), op, value)
+                out = [at, ast.Assign([_name(_VALUE, True)], value)]
+            else:                       # the value is computed before the index
+                out = [ast.Assign([_name(_VALUE, True)], value), at]
+            index = f"{_ADDR} >> {shift}" if shift else _ADDR
+            out += _parse(f"if {_ADDR} < 0x8000:\n    {_VIEWS[size][1]}[{index}] = {_VALUE} & {_VIEWS[size][5]}")
+        else:
+            return None
+        return [ast.fix_missing_locations(ast.copy_location(s, node)) for s in out]
 
     def visit_Assign(self, node):
         if len(node.targets) == 1:
-            target = node.targets[0]
             value = self.visit(node.value)
-            keep = ast.Assign([_name(_VALUE, True)], value)
-            out = self._store(target, [keep])
-            if out is None and isinstance(target, ast.Subscript):
-                addr = self._index(target)
-                if addr is not None:
-                    out = [keep, ast.Assign([_name(_ADDR, True)], addr)] + _parse(_STORE_AT)
+            out = self._rewrite(node, node.targets[0], value)
             if out is not None:
-                return [ast.fix_missing_locations(ast.copy_location(s, node)) for s in out]
+                return out
             node.value = value
-            node.targets = [self.visit(target)]
+            node.targets = [self.visit(node.targets[0])]
             return node
         return self.generic_visit(node)
 
     def visit_AugAssign(self, node):
-        target = node.target
-        if isinstance(target, ast.Attribute):
-            local = self._var(target, "scalar")
-            if local is not None:
-                now = ast.Subscript(_name(_LS), _name(local), ast.Load())
-                keep = ast.Assign([_name(_VALUE, True)], ast.BinOp(now, node.op, self.visit(node.value)))
-                out = self._store(target, [keep])
-                return [ast.fix_missing_locations(ast.copy_location(s, node)) for s in out]
-        elif isinstance(target, ast.Subscript):
-            addr = self._index(target)
-            if addr is not None:
-                now = ast.Subscript(_name(_LS), ast.BinOp(_name(_ADDR), ast.RShift(), ast.Constant(2)), ast.Load())
-                out = [ast.Assign([_name(_ADDR, True)], addr),
-                       ast.Assign([_name(_VALUE, True)], ast.BinOp(now, node.op, self.visit(node.value)))]
-                out += _parse(_STORE_AT)
-                return [ast.fix_missing_locations(ast.copy_location(s, node)) for s in out]
-        return self.generic_visit(node)
+        out = self._rewrite(node, node.target, self.visit(node.value), node.op)
+        return out if out is not None else self.generic_visit(node)
 
 
 # ----------------------------------------------------------------------------- the pass
@@ -353,9 +376,12 @@ def inline_method(fn: ast.FunctionDef, cls) -> ast.FunctionDef:
     if args and args[0].arg == "self":
         hub = _Hub(cls, "self")
         fn.body = [n for s in fn.body for n in _as_list(hub.visit(s))]
-        if hub.used:
-            prologue += _parse(f"{_L}, {_LS} = {_RT}.L, {_RT}.Ls")
-            prologue += [_parse(f"{local} = {src}")[0] for local, src in hub.used.items()]
+        for size in sorted(hub.views):
+            load, store, rt_load, rt_store = _VIEWS[size][:4]
+            prologue += _parse(f"{load} = {_RT}.{rt_load}")
+            if store != load:
+                prologue += _parse(f"{store} = {_RT}.{rt_store}")
+        prologue += [_parse(f"{local} = {src}")[0] for local, src in hub.used.items()]
     fn.body, charged = _inline_body(fn.body)
     if charged:
         divisions = _Divisions()
