@@ -12,10 +12,18 @@ written out in the method, on locals bound once at its start:
   (a method runs in one cog's greenlet from start to end); the hand-over to
   the scheduler stays where it was, at the same cycle, through
   :func:`~spinemu.translate.runtime.pause_tick` / ``pause_tick_at``;
-* ``self.x`` of a long VAR/DAT variable and ``self.a[i]`` of a long array
-  read and write the hub's long views directly, the address worked out as
+* a charge after only *neutral* statements (:func:`_neutral`: values and hub
+  variables, no calls but pure helpers, no ``cog``, no jumps) knows its fetch
+  alignment as a constant, and takes over the previous charge's store of the
+  cycle counter (done only on a hand-over, with the value it had); a loop
+  body's first charge too, when both ways in leave the same alignment
+  (:func:`_loop_entry`);
+* ``self.x`` of a VAR/DAT variable and ``self.a[i]`` of an array (long, word,
+  byte) read and write the hub's views directly, the address worked out as
   :mod:`spinemu.translate.spin`'s properties and array views do (a store at or
-  past $8000 is dropped, as there).
+  past $8000 is dropped, as there);
+* ``x = spin.mod(e, C)`` / ``spin.div`` by a positive constant: the short path
+  of :func:`spinemu.translate.spin.mod` written out.
 
 Python evaluates everything in the same order as before (values before
 stores, an augmented target read before its value), so what a method
@@ -25,9 +33,9 @@ from __future__ import annotations
 
 import ast
 
-from . import spin
+from . import runtime, spin
 
-__all__ = ["inline_method", "GLOBALS"]
+__all__ = ["inline_method", "install"]
 
 _COG, _PHASE, _T, _RT = "__spin_c", "__spin_p", "__spin_t", "__spin_RT"
 _L, _LS = "__spin_L", "__spin_Ls"
@@ -370,7 +378,7 @@ class _Divisions(ast.NodeTransformer):
 
 
 def inline_method(fn: ast.FunctionDef, cls) -> ast.FunctionDef:
-    """Write the charges and long hub accesses of woven method ``fn`` (of class ``cls``) out in its body."""
+    """Write the charges, hub variable accesses and constant divisions of woven method ``fn`` (of class ``cls``) out."""
     prologue = []
     args = fn.args.posonlyargs + fn.args.args
     if args and args[0].arg == "self":
@@ -400,10 +408,6 @@ def _as_list(x) -> list:
 
 def install(namespace: dict) -> None:
     """Put the names inlined code uses into a generated module's namespace."""
-    from . import runtime
     namespace[_RT] = spin.RT
     namespace[_PAUSE] = runtime.pause_tick
     namespace[_PAUSE_AT] = runtime.pause_tick_at
-
-
-GLOBALS = (_RT, _PAUSE, _PAUSE_AT)

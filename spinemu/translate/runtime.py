@@ -17,7 +17,9 @@
 * :func:`instantiate` builds the object tree at the hub addresses the
   image's object tables give.
 
-Hot path: :func:`tick` and :func:`tick_at` (called once or twice per statement).
+Hot path: the charges :mod:`spinemu.translate.inline` writes out in each woven
+method (the arithmetic of :func:`tick` and :func:`tick_at`, which still serve the
+charges inside conditions); :func:`pause_tick`/:func:`pause_tick_at` are their hand-overs.
 """
 from __future__ import annotations
 

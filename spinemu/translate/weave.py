@@ -18,7 +18,10 @@ where the bytecode interpreter puts it (:func:`spinemu.translate.spin.call_at`).
 
 Each charge is ``(aligned, extra)``: ``aligned`` cycles charged with a
 bytecode fetch's hub alignment (:func:`spinemu.translate.runtime.tick`),
-``extra`` cycles without (:func:`~spinemu.translate.runtime.add`).
+``extra`` cycles without (:func:`~spinemu.translate.runtime.add`).  Before
+a woven method is compiled, :func:`spinemu.translate.inline.inline_method`
+writes the statement-level charges and the hub variables' accesses out as
+local arithmetic (the Python engine's hot path).
 """
 from __future__ import annotations
 
