@@ -53,8 +53,7 @@ def tick(k: int) -> None:
     t = c.t + 12
     t += (c.hub_phase - t) & 15
     if t >= RT.limit:
-        RT.keys[c.id] = t
-        RT.pause()
+        pause_tick(t)
     c.t = t + k
 
 
@@ -70,19 +69,18 @@ def tick_at(k: int, access: int, last: int = -1) -> None:
     t = c.t + 12
     t += (c.hub_phase - t) & 15
     if t + access >= RT.limit or t + last >= RT.final:
-        RT.keys[c.id] = t + access if t + access >= RT.limit else RT.final
-        RT.pause()
+        pause_tick_at(t, access)
     c.t = t + k
 
 
 def pause_tick(t: int) -> None:
-    """:func:`tick`'s hand-over to the scheduler, for charges written out in a method (spinemu.translate.inline)."""
+    """:func:`tick`'s hand-over to the scheduler (also for the charges spinemu.translate.inline writes out)."""
     RT.keys[RT.cog.id] = t
     RT.pause()
 
 
 def pause_tick_at(t: int, access: int) -> None:
-    """:func:`tick_at`'s hand-over to the scheduler, for charges written out in a method."""
+    """:func:`tick_at`'s hand-over to the scheduler: at its shared access, or at the run's end."""
     RT.keys[RT.cog.id] = t + access if t + access >= RT.limit else RT.final
     RT.pause()
 
