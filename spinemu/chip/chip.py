@@ -170,9 +170,9 @@ class Chip(Pins, Scheduler):
         if compile_blocks:
             self._blocks = [self._block_stub] * 0x10000
             self._heat = bytearray(0x10000)
-            self._run_plain, self._run_to = self._run_blocks, self._run_blocks
+            self._run_plain = self._run_blocks
         else:
-            self._run_plain, self._run_to = self._run_spin, self._run_spin_to
+            self._run_plain = self._run_spin
         self.now = 0
 
 

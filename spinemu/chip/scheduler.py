@@ -200,7 +200,7 @@ class Scheduler:
                 c.busy = loop
             self._park(c)
             return
-        self._run_to(c, until, busy.head)
+        self._run_plain(c, until, busy.head)
         if c.pc != busy.head and c.bytecodes - c.learn_mark > LEARN_AFTER:
             c.busy = None               # the program left that loop: look for the next one
             c.learn_after = 0
@@ -285,49 +285,12 @@ class Scheduler:
             if self._compiler is not None:
                 self._compiler.add_boundary(loop.head)
 
-    def _run_spin_to(self, c: Cog, limit: int, stop_pc: int) -> None:
-        """:meth:`_run_spin`, but stop when the cog comes back to ``stop_pc`` (a loop head)."""
-        mem = self.mem
-        H = self.handlers
-        ACC = self.access_at
-        P = c.hub_phase
-        t = c.t
-        n = 0
-        tf = t
-        try:
-            while True:
-                pc = c.pc
-                op = mem[pc]
-                tf = t + 12
-                tf += (P - tf) & 15
-                if tf + ACC[op] >= limit:
-                    break
-                c.pc = pc + 1
-                t = tf + H[op](c, op, t)
-                n += 1
-                if c.pc == stop_pc:
-                    break
-        except Reschedule as e:
-            t = tf + e.rest
-            n += 1
-        except Preempted:
-            c.pc = pc
-            self._end_preemption()
-        except CogStopped:
-            c.bytecodes += n + 1
-            return
-        except RebootRequested:
-            c.bytecodes += n + 1
-            c.t = tf
-            raise
-        except IndexError:
-            raise self.fault(c, c.pc - 1, "stack or address out of hub range") from None
-        c.bytecodes += n
-        if c.state == RUNNING:
-            c.t = t
+    def _run_spin(self, c: Cog, limit: int, stop_pc: int = -1) -> None:
+        """Run cog ``c``'s bytecodes while it starts them before ``limit``. (Hot loop.)
 
-    def _run_spin(self, c: Cog, limit: int) -> None:
-        """Run cog ``c``'s bytecodes while it starts them before ``limit``. (Hot loop.)"""
+        With ``stop_pc``, also stop when the cog comes back to that address
+        (a loop head, for the fast-forward's learner).
+        """
         mem = self.mem
         H = self.handlers
         ACC = self.access_at
@@ -346,6 +309,8 @@ class Scheduler:
                 c.pc = pc + 1
                 t = tf + H[op](c, op, t)
                 n += 1
+                if c.pc == stop_pc:
+                    break
         except Reschedule as e:
             t = tf + e.rest
             n += 1
@@ -378,7 +343,7 @@ class Scheduler:
             return
         pc = c.pc
         if not 0 <= pc < 0x10000:
-            return self._run_spin(c, limit) if stop_pc < 0 else self._run_spin_to(c, limit, stop_pc)
+            return self._run_spin(c, limit, stop_pc)
         B = self._blocks
         mem = self.mem
         H = self.handlers
@@ -417,7 +382,7 @@ class Scheduler:
                     break
                 if not 0 <= pc < 0x10000:
                     c.t = t
-                    return self._run_spin(c, limit) if stop_pc < 0 else self._run_spin_to(c, limit, stop_pc)
+                    return self._run_spin(c, limit, stop_pc)
         except Reschedule as e:
             t = tf + e.rest
             c.bytecodes += 1

@@ -363,12 +363,12 @@ class PythonChip(Chip):
         self.engine.attach(c, method, args)
 
     # Where the chip's scheduler hands a cog over (spinemu.chip.scheduler; it asks engine.key(c) itself):
-    def _run_spin(self, c, limit: int) -> None:
+    def _run_spin(self, c, limit: int, stop_pc: int = -1) -> None:
         """Run cog ``c`` until ``limit``: translated cogs by the Python engine."""
         if c.engine is self.engine:
             self.engine.run(c, limit)
         else:
-            super()._run_spin(c, limit)
+            super()._run_spin(c, limit, stop_pc)
 
 
 
