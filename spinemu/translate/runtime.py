@@ -184,11 +184,9 @@ class Engine:
         that bytecode; before it acts, the cog lets every other cog whose
         access comes earlier go first, as the bytecode engine's scheduler does.
         """
-        c = RT.cog
         tf = spin._fetched()
         if tf + access >= RT.limit:
-            RT.keys[c.id] = tf + access
-            self.pause()
+            pause_tick(tf + access)
         return tf
 
     def waitcnt(self, target: int) -> None:
