@@ -33,7 +33,7 @@ __all__ = [
     "IfBranch", "Case", "CaseItem", "RepeatForever", "RepeatCount", "RepeatWhile", "RepeatFrom",
     "ConDef", "ConEnumStart", "ConEnumName", "VarDecl", "ObjDecl", "LocalVar", "Method",
     "DatLabel", "Instruction", "Operand", "DataItem", "Data", "Org", "Res", "Fit", "DatFile",
-    "DatLine", "SpinFile", "VARIABLE_NODES",
+    "DatLine", "SpinFile", "VARIABLE_NODES", "walk",
 ]
 
 
@@ -43,6 +43,18 @@ def key(name: str) -> str:
 
 
 _NODES: list = []
+
+
+def walk(node):
+    """Every node in ``node`` (a node or a list of them), the outer first; a SpinFile is not entered."""
+    if isinstance(node, list):
+        for x in node:
+            yield from walk(x)
+    elif hasattr(node, "__dataclass_fields__") and not isinstance(node, SpinFile):
+        yield node
+        for f in node.__dataclass_fields__:
+            if f != "pos":
+                yield from walk(getattr(node, f))
 
 
 def _node(cls):

@@ -20,7 +20,7 @@ a call of :mod:`spinemu.translate.spin` where it does not (``/`` is
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 
 from ..frontend import ast as A
 from ..frontend.constants import float_bits
@@ -361,16 +361,11 @@ class ExprTranslator:
 
     def has_effects(self, node) -> bool:
         """Does evaluating ``node`` change anything (a method call, an assignment, ``x++``, a lock or cog built-in)?"""
-        if isinstance(node, _EFFECTS):
-            return True
-        if isinstance(node, A.Builtin) and node.name not in _PURE_BUILTINS:
-            return True
-        if isinstance(node, A.NameRef):             # a method called without parentheses
-            return self.lookup(node.name, node)[0] == "method"
-        if isinstance(node, A.Node):
-            return any(self.has_effects(getattr(node, f.name)) for f in fields(node) if f.name != "pos")
-        if isinstance(node, (list, tuple)):
-            return any(self.has_effects(n) for n in node)
+        for n in A.walk(node):
+            if isinstance(n, _EFFECTS) or isinstance(n, A.Builtin) and n.name not in _PURE_BUILTINS:
+                return True
+            if isinstance(n, A.NameRef) and self.lookup(n.name, n)[0] == "method":   # called without ()
+                return True
         return False
 
     def value_x(self, x: X) -> str:

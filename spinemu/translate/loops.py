@@ -25,8 +25,7 @@ from .costs import Op, jump_op, split
 
 def assigns(stmts, name: str) -> bool:
     """Does any statement in ``stmts`` assign the variable ``name`` (lower case)?"""
-    from .program import _walk
-    for n in _walk(stmts):
+    for n in A.walk(stmts):
         t = getattr(n, "target", None) if isinstance(n, (A.Assign, A.PreOp, A.PostOp)) else \
             n.var if isinstance(n, A.RepeatFrom) else None
         if isinstance(t, A.NameRef) and key(t.name) == name:

@@ -247,7 +247,7 @@ class ObjectTranslator:
         (consistent returns, PEP 8).
         """
         return (self.unit.path, key(method.name)) in self.values_used or \
-            any(isinstance(n, A.Return) and n.value is not None for n in _walk(method.body))
+            any(isinstance(n, A.Return) and n.value is not None for n in A.walk(method.body))
 
     def read_after(self, method, stmt, name: str) -> bool:
         return _count_mentions(method.body, name) > _count_mentions([stmt], name)
@@ -567,19 +567,8 @@ def _method_doc(spin, m) -> list:
     return out
 
 
-def _walk(node):
-    if isinstance(node, list):
-        for x in node:
-            yield from _walk(x)
-    elif hasattr(node, "__dataclass_fields__") and not isinstance(node, A.SpinFile):
-        yield node
-        for f in node.__dataclass_fields__:
-            if f != "pos":
-                yield from _walk(getattr(node, f))
-
-
 def _mentions(body, names: set, result_ref=False) -> bool:
-    for n in _walk(body):
+    for n in A.walk(body):
         if result_ref and isinstance(n, A.ResultRef):
             return True
         if isinstance(n, A.NameRef) and key(n.name) in names:
@@ -600,7 +589,7 @@ def _values_used(units) -> frozenset:
         methods = {key(m.name) for m in u.spin.methods}
         children = {key(decl.name): child.path for decl, child in u.children}
         dropped = set()
-        for n in _walk([m.body for m in u.spin.methods]):
+        for n in A.walk([m.body for m in u.spin.methods]):
             if isinstance(n, A.ExprStmt):
                 dropped.add(id(n.expr.call if isinstance(n.expr, A.AbortTrap) else n.expr))
             elif isinstance(n, A.Builtin) and n.name in ("cognew", "coginit") and n.args:
@@ -615,14 +604,14 @@ def _values_used(units) -> frozenset:
 
 
 def _count_mentions(body, name: str) -> int:
-    return sum(1 for n in _walk(body) if isinstance(n, A.NameRef) and key(n.name) == name)
+    return sum(1 for n in A.walk(body) if isinstance(n, A.NameRef) and key(n.name) == name)
 
 
 def _cog_methods(unit) -> set:
     """Keys of the methods of ``unit`` that a ``cognew``/``coginit`` starts a cog in."""
     found = set()
     for m in unit.spin.methods:
-        for n in _walk(m.body):
+        for n in A.walk(m.body):
             if isinstance(n, A.Builtin) and n.name.lower() in ("cognew", "coginit") and n.args:
                 first = n.args[0] if n.name.lower() == "cognew" else n.args[min(1, len(n.args) - 1)]
                 first = first.expr if isinstance(first, A.Paren) else first

@@ -263,8 +263,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
 
     def run_params(self, st) -> int:
         """Parameters of the Spin method a ``cognew``/``coginit`` in ``st`` starts (for RUN's cost)."""
-        from .program import _walk
-        for n in _walk([st]):
+        for n in A.walk([st]):
             if isinstance(n, A.Builtin) and n.name.lower() in ("cognew", "coginit") and n.args:
                 first = n.args[0] if n.name.lower() == "cognew" else n.args[min(1, len(n.args) - 1)]
                 first = first.expr if isinstance(first, A.Paren) else first
@@ -613,7 +612,6 @@ def _has_call(text: str) -> bool:
 
 def needs_hub_frame(method) -> bool:
     """Does ``method`` need its locals in hub RAM (a local array, ``@local``, ``local[i]``, ``local.byte``)?"""
-    from .program import _walk
     if any(loc.count is not None for loc in method.locals):
         return True
     names = {key(p) for p, _ in method.params} | {key(loc.name) for loc in method.locals} | {"result"}
@@ -623,7 +621,7 @@ def needs_hub_frame(method) -> bool:
     def local_ref(t):
         return isinstance(t, A.ResultRef) or (isinstance(t, A.NameRef) and key(t.name) in names)
 
-    for n in _walk(method.body):
+    for n in A.walk(method.body):
         if isinstance(n, A.AddrOf) and local_ref(n.target.expr if isinstance(n.target, A.Paren) else n.target):
             return True
         if isinstance(n, (A.NameRef, A.ResultRef)) and n.index is not None and local_ref(n):
