@@ -450,6 +450,16 @@ def cmd_sidebyside(args, out: _Out) -> int:
 
 
 # ----------------------------------------------------------------------------- parser
+def _obj_search_option(p) -> None:
+    p.add_argument("-L", "-I", dest="include", action="append", metavar="DIR",
+                   help="add a folder to search for OBJ files (after the source's own folder)")
+
+
+def _define_option(p) -> None:
+    p.add_argument("-D", dest="define", action="append", metavar="NAME",
+                   help="define NAME for #ifdef in every file (as OpenSpin's -D)")
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="spinemu",
@@ -463,10 +473,8 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("source", metavar="SRC.spin")
     c.add_argument("-o", "--output", metavar="OUT.binary", help="image file (default: SRC.binary)")
     c.add_argument("-e", "--eeprom", metavar="OUT.eeprom", help="also (or only) write the 32 KB EEPROM image")
-    c.add_argument("-L", "-I", dest="include", action="append", metavar="DIR",
-                   help="add a folder to search for OBJ files (after the source's own folder)")
-    c.add_argument("-D", dest="define", action="append", metavar="NAME",
-                   help="define NAME for #ifdef in every file (as OpenSpin's -D)")
+    _obj_search_option(c)
+    _define_option(c)
     c.add_argument("--listing", metavar="FILE", help="write a listing (bytecode with source lines)")
     c.add_argument("-q", "--quiet", action="store_true", help="print nothing but errors")
     c.set_defaults(func=cmd_compile)
@@ -484,8 +492,8 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--trace-format", choices=["log", "vcd"],
                    help="log: '<cycle> <dir> <out>' lines; vcd: for GTKWave/PulseView (default: by extension, else log)")
     r.add_argument("--dump-hub", metavar="FILE", help="write the 32 KB hub RAM at the end of the run")
-    r.add_argument("-L", "-I", dest="include", action="append", metavar="DIR", help="OBJ search folder")
-    r.add_argument("-D", dest="define", action="append", metavar="NAME", help="define NAME for #ifdef")
+    _obj_search_option(r)
+    _define_option(r)
     r.add_argument("--compat", choices=["spinsim", "chip"],
                    help="spinsim (default): Parallax's ROM interpreter as the cycle-exact reference simulator runs "
                         "it, cycle for cycle; chip: the silicon where it differs (a new cog loads for 7,952 "
@@ -510,7 +518,7 @@ def build_parser() -> argparse.ArgumentParser:
                                    "source, compiled first and listed with its source lines).")
     d.add_argument("target", metavar="TARGET")
     d.add_argument("-o", "--output", metavar="FILE", help="write the listing to FILE")
-    d.add_argument("-L", "-I", dest="include", action="append", metavar="DIR", help="OBJ search folder")
+    _obj_search_option(d)
     d.set_defaults(func=cmd_disasm)
 
     t = sub.add_parser("translate", help="translate Spin to readable Python",
@@ -518,7 +526,7 @@ def build_parser() -> argparse.ArgumentParser:
     t.add_argument("source", metavar="SRC.spin")
     t.add_argument("-o", "--output", metavar="OUT_DIR", help="folder for the generated modules")
     t.add_argument("--side-by-side", action="store_true", help="print Spin and Python next to each other")
-    t.add_argument("-L", "-I", dest="include", action="append", metavar="DIR", help="OBJ search folder")
+    _obj_search_option(t)
     t.add_argument("-q", "--quiet", action="store_true")
     t.set_defaults(func=cmd_translate)
 
