@@ -18,6 +18,7 @@ from ..diagnostics import Diagnostic
 from .. import messages as msg
 from ..frontend.ast import AddrOf, NameRef, ObjConst, key
 from ..frontend.constants import Const, ConstError, NotConstant, Undefined, evaluate
+from ..frontend.objects import child_constant
 from .code import Span
 from .dat import DatSymbol, assemble_dat
 from .stmts import MethodCompiler
@@ -113,13 +114,7 @@ class ObjectCompiler:
         return None
 
     def child_const(self, node) -> Const:
-        entry = self.unit.child_by_name.get(key(node.obj))
-        if entry is None:
-            raise ConstError(msg.UNDEFINED.format(name=node.obj), node)
-        value = entry[1].constants.get(node.name)
-        if value is None:
-            raise ConstError(msg.UNKNOWN_CONSTANT_IN_OBJECT.format(obj=node.obj, name=node.name), node)
-        return value
+        return child_constant(self.unit, node)
 
     def has_method(self, name: str) -> bool:
         return isinstance(self.symbols.get(name), MethodSymbol)

@@ -23,7 +23,7 @@ from .constants import Const, ConstError, NotConstant, evaluate
 from .parser import parse_text
 from .source import read_source
 
-__all__ = ["ObjectUnit", "load_program", "resolve_object_file", "ConstantTable"]
+__all__ = ["ObjectUnit", "load_program", "resolve_object_file", "ConstantTable", "child_constant"]
 
 
 @dataclass
@@ -110,6 +110,17 @@ class _Loader:
         self.errors.append(Diagnostic(text, pos.path, pos.line, pos.col, spin.source.line(pos.line)))
 
 
+def child_constant(unit: ObjectUnit, node: ObjConst):
+    """The value of ``obj#NAME`` (``node``) in ``unit``; ConstError if the object or the constant is unknown."""
+    child = unit.child_by_name.get(key(node.obj))
+    if child is None:
+        raise ConstError(msg.UNDEFINED.format(name=node.obj), node)
+    value = child[1].constants.get(node.name)
+    if value is None:
+        raise ConstError(msg.UNKNOWN_CONSTANT_IN_OBJECT.format(obj=node.obj, name=node.name), node)
+    return value
+
+
 def _fold_constants(unit: ObjectUnit, errors: list) -> None:
     """Evaluate the CON section of ``unit`` (its children are already folded)."""
     spin = unit.spin
@@ -124,13 +135,7 @@ def _fold_constants(unit: ObjectUnit, errors: list) -> None:
             pending_undefined.setdefault(id(node), node)
             raise NotConstant(node)
         if isinstance(node, ObjConst):
-            child = unit.child_by_name.get(key(node.obj))
-            if child is None:
-                raise ConstError(msg.UNDEFINED.format(name=node.obj), node)
-            value = child[1].constants.get(node.name)
-            if value is None:
-                raise ConstError(msg.UNKNOWN_CONSTANT_IN_OBJECT.format(obj=node.obj, name=node.name), node)
-            return value
+            return child_constant(unit, node)
         raise NotConstant(node)
 
     char_bytes = spin.source.string_bytes
