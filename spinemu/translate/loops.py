@@ -77,11 +77,8 @@ class LoopTranslator:
         djnz_t, djnz_n = jump_op(T, "DJNZ", long_back, True), jump_op(T, "DJNZ", long_back, False)
         self.charge(first or line, "b", self.expr_ops(st.count) + [jump_op(T, "TJZ", size + 3 > 63, False)])
         info = _LoopInfo("count", next_ops=[djnz_t])
-        self.held += 4                      # the count stays on the stack while the body runs
-        try:
+        with self.holding(4):               # the count stays on the stack while the body runs
             _, last = self.loop_block(st.body, info)
-        finally:
-            self.held -= 4
         self.charge(last, "a", [djnz_t])
         self.charge_add(line, "e", djnz_n.rest - djnz_t.rest)
         return first or line, line

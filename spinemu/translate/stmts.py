@@ -26,6 +26,7 @@ Costs come from the compiler's own bytecode for each piece (costs.py).
 from __future__ import annotations
 
 import re
+from contextlib import contextmanager
 
 from ..compiler.code import CodeBuffer, Label
 from ..compiler import stmts as cstmts
@@ -548,20 +549,19 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             else:                       # each value is compared only if the ones before it failed
                 self.charge(header, "b", head if n == 0 else [])
                 self.code.charge_each(header, per_value)
-            _, body_last = self.held_block(8, item.body)
+            with self.holding(8):
+                _, body_last = self.block(item.body)
             self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
         if other is not None:
             self.code.comments_before(other.pos.line)
             if items:
                 self.code.line("else:", other.pos.line)
-                _, body_last = self.held_block(8, other.body)
+                with self.holding(8):
+                    _, body_last = self.block(other.body)
             else:
                 self.charge(self.emit("pass", other), "b", head)
-                self.held += 8
-                try:
+                with self.holding(8):
                     body_last = self.statement_list(other.body)
-                finally:
-                    self.held -= 8
             self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
         elif header is not None:
             self.charge(header, "e", [jump_op(self.T, "CASE_DONE")])
@@ -587,13 +587,14 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             result[id(v)] = after > 63
         return result
 
-    def held_block(self, held: int, stmts) -> tuple:
-        """:meth:`block` for a body run while the statement around it keeps ``held`` bytes on the stack."""
-        self.held += held
+    @contextmanager
+    def holding(self, n: int):
+        """Translate a body run while the statement around it keeps ``n`` more bytes on the stack."""
+        self.held += n
         try:
-            return self.block(stmts)
+            yield
         finally:
-            self.held -= held
+            self.held -= n
 
     def statement_list(self, stmts):
         last = None
