@@ -48,7 +48,7 @@ def _run(job):
     from spinemu.diagnostics import EmulationError
     from tests.translate.crosscheck import crosscheck, run_bytecode
     try:
-        run_bytecode(path, cycles, compat)
+        bytecode_run = run_bytecode(path, cycles, compat)
     except EmulationError as exc:
         try:
             translate.run_translated(path, max_cycles=cycles, compat=compat)
@@ -57,7 +57,7 @@ def _run(job):
             return path, "same fault" if same else "different fault", f"{exc.message} / {exc2.message}"
         return path, "different fault", f"bytecode: {exc.message}; Python engine ran"
     try:
-        result = crosscheck(path, cycles, compat)
+        result = crosscheck(path, cycles, compat, bytecode_run)
     except Exception as exc:
         return path, "crash", f"{type(exc).__name__}: {exc}"
     if result.ok and result.bytecode.end_cycle == result.python.end_cycle:

@@ -82,10 +82,14 @@ def stack_bytes(python_result, high: dict) -> set:
     return allowed
 
 
-def crosscheck(src: str, max_cycles: int, compat: str = "spinsim") -> Agreement:
-    """Run ``src`` on both engines for ``max_cycles`` in compat mode ``compat`` and compare."""
+def crosscheck(src: str, max_cycles: int, compat: str = "spinsim", bytecode_run=None) -> Agreement:
+    """Run ``src`` on both engines for ``max_cycles`` in compat mode ``compat`` and compare.
+
+    ``bytecode_run``: what :func:`run_bytecode` already returned for these arguments, if the
+    caller ran it (to see whether it faults); otherwise it is run here.
+    """
     python = translate.run_translated(src, max_cycles=max_cycles, compat=compat)
-    bytecode, high = run_bytecode(src, max_cycles, compat)
+    bytecode, high = bytecode_run or run_bytecode(src, max_cycles, compat)
     cmp = compare_traces(bytecode.trace, python.trace, slack=0, tolerance=0.02)
     allowed = stack_bytes(python, high)
     diffs = [(a, bytecode.hub[a], python.hub[a]) for a in range(len(bytecode.hub))

@@ -50,16 +50,14 @@ def _param(path):
 def test_python_engine_matches_the_bytecode_engine(path, compat):
     budget = BUDGETS.get(os.path.basename(path), DEFAULT_BUDGET)
     try:
-        bytecode_fault = run_bytecode(path, budget, compat) and None
-    except EmulationError as exc:
-        bytecode_fault = exc
-    if bytecode_fault is not None:          # a program that faults must fault on both engines
+        bytecode_run = run_bytecode(path, budget, compat)
+    except EmulationError as bytecode_fault:  # a program that faults must fault on both engines
         with pytest.raises(EmulationError) as err:
             translate.run_translated(path, max_cycles=budget, compat=compat)
         assert bytecode_fault.message.split(":")[0] == err.value.message.split(":")[0]
         return
     try:
-        result = crosscheck(path, budget, compat)
+        result = crosscheck(path, budget, compat, bytecode_run)
     except TranslateError as exc:
         pytest.fail(f"not translated: {exc}")
     assert result.ok, result.describe()
