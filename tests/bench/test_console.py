@@ -244,3 +244,11 @@ def test_the_console_works_on_any_engine_with_the_bench_interface_inverted_or_no
     listener(changes[:10], changes[10][0], changes[10][0])
     listener(changes[10:], tx.end + 200, tx.end + 200)
     assert console.data == b"Hey\n" and console.text == "Hey\n"
+
+
+def test_run_spin_attaches_the_parts_it_is_given():
+    import spinemu
+
+    console = spinemu.SerialConsole(baud=19200)
+    result = spinemu.run_spin(src("serial_hello"), parts=[console])
+    assert result.reason == "all cogs stopped" and console.text == "Hello from Spin!\n7 14 21 \n"
