@@ -1,9 +1,11 @@
-"""The serial console on real runs: Spin programs that bit-bang serial (tests/data/bench), on both engines.
+"""The serial console on real runs: Spin programs that bit-bang serial, on both engines.
 
-The programs are spinemu's own (``bitbang_serial.spin``: WAITCNT-timed 8N1 in
-Spin, which keeps up with 19200 baud).  Their images are OpenSpin's; the text
-of ``serial_hello`` is what spinsim 0.99 printed on its serial port; what
-``serial_echo`` answers follows from the numbers it is sent.
+The programs are spinemu's own (``spin_src/examples/bitbang_serial.spin``:
+WAITCNT-timed 8N1 in Spin, which keeps up with 19200 baud; the examples
+``serial_hello`` and ``serial_echo``; ``tests/data/bench/serial_two_cogs``).
+Their images are OpenSpin's; the text of ``serial_hello`` is what spinsim 0.99
+printed on its serial port; what ``serial_echo`` answers follows from the
+numbers it is sent.
 """
 from __future__ import annotations
 
@@ -22,23 +24,28 @@ from spinemu.translate import run_translated
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 BENCH = os.path.join(ROOT, "tests", "data", "bench")
+EXAMPLES = os.path.join(ROOT, "spin_src", "examples")
 ARTICLE = os.path.join(ROOT, "tests", "data", "article")
 CLOCK = 80_000_000
+#: where each program and OpenSpin's image of it are
+PROGRAMS = {"serial_hello": (EXAMPLES, "examples"), "serial_echo": (EXAMPLES, "examples"),
+            "serial_two_cogs": (BENCH, "bench")}
 
 
 def src(name: str) -> str:
-    return os.path.join(BENCH, name + ".spin")
+    return os.path.join(PROGRAMS[name][0], name + ".spin")
 
 
 @pytest.fixture(scope="module")
 def images():
-    return {name: compile_file(src(name)).binary for name in ("serial_hello", "serial_echo", "serial_two_cogs")}
+    return {name: compile_file(src(name), include_dirs=[EXAMPLES]).binary for name in PROGRAMS}
 
 
 def run(name, images, console, engine="bytecode", compat="spinsim", cycles=CLOCK, inputs=None):
     """Run a bench program with ``console`` attached; returns (result, chip or None)."""
     if engine == "python":
-        return run_translated(src(name), max_cycles=cycles, compat=compat, inputs=inputs, parts=[console]), None
+        return run_translated(src(name), include_dirs=[EXAMPLES], max_cycles=cycles, compat=compat, inputs=inputs,
+                              parts=[console]), None
     chip = Chip(images[name], compat=compat, inputs=inputs)
     console.attach(chip)
     return chip.run(max_cycles=cycles), chip
@@ -46,7 +53,7 @@ def run(name, images, console, engine="bytecode", compat="spinsim", cycles=CLOCK
 
 @pytest.mark.parametrize("name", ["serial_hello", "serial_echo", "serial_two_cogs"])
 def test_spinemu_compiles_the_serial_programs_as_openspin_does(images, name):
-    with open(os.path.join(BENCH, name + ".binary"), "rb") as f:
+    with open(os.path.join(ROOT, "tests", "data", PROGRAMS[name][1], name + ".binary"), "rb") as f:
         assert images[name] == f.read()
 
 

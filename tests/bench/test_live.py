@@ -11,7 +11,7 @@ from spinemu.chip import Chip
 from spinemu.compiler import compile_file
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-ECHO = os.path.join(ROOT, "tests", "data", "bench", "serial_echo.spin")
+ECHO = os.path.join(ROOT, "spin_src", "examples", "serial_echo.spin")
 
 
 class ScriptedKeys:

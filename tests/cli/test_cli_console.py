@@ -1,7 +1,7 @@
 """The serial console on the command line: ``spinemu run --console*``, ``--baud`` and ``trace decode uart``.
 
 Runs in-process (``main(argv, stdout, stderr)``) on spinemu's own bit-banged
-serial programs in tests/data/bench.
+serial programs (spin_src/examples, tests/data/bench).
 """
 import io
 import os
@@ -15,8 +15,9 @@ from spinemu.cli import main
 
 ROOT = Path(__file__).parent.parent.parent
 BENCH = ROOT / "tests" / "data" / "bench"
-HELLO = BENCH / "serial_hello.spin"
-ECHO = BENCH / "serial_echo.spin"
+EXAMPLES = ROOT / "spin_src" / "examples"
+HELLO = EXAMPLES / "serial_hello.spin"
+ECHO = EXAMPLES / "serial_echo.spin"
 TWO_COGS = BENCH / "serial_two_cogs.spin"
 
 
@@ -64,7 +65,8 @@ def test_bytes_sent_after_the_run_ended_are_reported(tmp_path):
 
 
 def test_console_pins_and_baud_pick_another_port():
-    code, out, err = run("run", TWO_COGS, "--console-pins", "0,1", "--baud", "19_200", "--compat", "chip")
+    code, out, err = run("run", TWO_COGS, "-L", EXAMPLES, "--console-pins", "0,1", "--baud", "19_200",
+                         "--compat", "chip")
     assert code == 0, err
     assert out.startswith("1,2,3,4,5,6,7,8,9,10,11,12,\n")
     assert "P0: 28 bytes received" in out
@@ -115,7 +117,7 @@ def test_run_help_describes_the_console():
 
 def test_trace_decode_uart_reads_the_serial_text_from_a_trace(tmp_path):
     log = tmp_path / "two.log"
-    assert run("run", TWO_COGS, "--trace", log, "-q")[0] == 0
+    assert run("run", TWO_COGS, "-L", EXAMPLES, "--trace", log, "-q")[0] == 0
     code, out, err = run("trace", "decode", "uart", log, "--pin", "0", "--baud", "19200", "--hold-last")
     assert (code, out, err) == (0, "1,2,3,4,5,6,7,8,9,10,11,12,\n", "")
     code, out, err = run("trace", "decode", "uart", log, "--pin", "0", "--baud", "19200")

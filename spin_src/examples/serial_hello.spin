@@ -1,4 +1,6 @@
-{{ Prints two lines on P30 at 19200 baud with a bit-banged Spin serial port. }}
+{{ Prints two lines on P30 at 19200 baud with a serial port written in Spin
+   (bitbang_serial.spin).  Watch it on spinemu's serial console:
+     spinemu run spin_src/examples/serial_hello.spin --baud 19200 }}
 CON
   _clkmode = xtal1 + pll16x
   _xinfreq = 5_000_000
