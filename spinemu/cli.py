@@ -34,8 +34,11 @@ examples:
   spinemu run spin_src/stepper_demo.spin --trace demo.vcd --trace-format vcd
   spinemu compile spin_src/stepper_demo.spin -o demo.binary
   spinemu run spin_src/bs2/stepper_bs2.bs2 --seconds 3   the BASIC Stamp original
+  spinemu run spin_src/examples/serial_echo.spin --baud 9600 --console
+                                                         a serial console on P30/P31: type numbers
   spinemu trace show demo.log --pins 0..4                timeline of pins 0-4
   spinemu trace steps demo.log --pins 1..4               stepper decoder
+  spinemu trace decode uart run.log --pin 30 --baud 9600  serial text on a pin
   spinemu disasm demo.binary                             listing of an image
 """
 
@@ -394,7 +397,10 @@ def cmd_run(args, out: _Out) -> int:
         started = sum(1 for e in result.cog_events if e[2] == "start")
         stopped = sum(1 for e in result.cog_events if e[2] == "stop")
         sim_s = result.end_cycle / result.trace.clock_hz
-        rows = [("ended", result.reason),
+        reason = result.reason
+        if session and reason == "deadlock":
+            reason += ": the cogs wait on pins nothing will change (input the console does not have)"
+        rows = [("ended", reason),
                 ("cogs", f"{started} started, {stopped} stopped"),
                 ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
         if args.trace:
@@ -606,8 +612,9 @@ def _obj_search_option(p) -> None:
 def _console_options(p) -> None:
     g = p.add_argument_group(
         "serial console",
-        "A serial terminal on the program's TX/RX pins (a USB serial adapter on P30/P31): 8 data bits, no "
-        "parity, 1 stop bit. While it is attached, the RX pin idles high.")
+        "A serial terminal on the program's TX/RX pins, as a USB serial adapter on P30/P31:\n"
+        "8 data bits, no parity, 1 stop bit. Any of these options attaches it; while it is\n"
+        "attached, the RX pin idles high. See docs/console.md.")
     g.add_argument("--console", action="store_true",
                    help="attach the console and print what the program sends as it arrives; when stdin is a "
                         "terminal, the keys typed are sent (Enter sends CR) and the run keeps to real time")

@@ -259,3 +259,16 @@ def test_run_spin_attaches_the_parts_it_is_given():
     console = spinemu.SerialConsole(baud=19200)
     result = spinemu.run_spin(src("serial_hello"), parts=[console])
     assert result.reason == "all cogs stopped" and console.text == "Hello from Spin!\n7 14 21 \n"
+
+
+def test_the_python_example_of_the_console_docs_runs_as_shown(monkeypatch):
+    import re
+
+    with open(os.path.join(ROOT, "docs", "console.md")) as f:
+        doc = f.read()
+    block = re.search(r"```python\n(import spinemu\n.*?)```", doc, re.S).group(1)
+    monkeypatch.chdir(ROOT)
+    namespace: dict = {}
+    exec(block, namespace)
+    shown = re.search(r"console\.text +# '(.*?)'", block).group(1).encode().decode("unicode_escape")
+    assert namespace["console"].text == shown == "Number? Twice 42 is 84\nNumber? "
