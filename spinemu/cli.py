@@ -19,6 +19,7 @@ import time
 from typing import Optional, Sequence, TextIO
 
 from . import __version__
+from .cli_console import ConsoleSession, add_decode_parser, console_options, console_wanted, decode_uart_command
 from .diagnostics import SpinError, UsageError
 
 __all__ = ["main", "entry_point", "build_parser"]
@@ -62,32 +63,6 @@ def _positive_float(text: str) -> float:
     if not math.isfinite(v) or v <= 0:
         raise argparse.ArgumentTypeError(f"expected a number above 0, got {text!r}")
     return v
-
-
-def _seconds_from_start(text: str) -> float:
-    try:
-        v = float(text.replace("_", ""))
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a number of seconds, got {text!r}")
-    if not math.isfinite(v) or v < 0:
-        raise argparse.ArgumentTypeError(f"expected a number of seconds of 0 or more, got {text!r}")
-    return v
-
-
-def _pin_pair(text: str) -> tuple[int, int]:
-    parts = [p.strip().upper().removeprefix("P") for p in text.split(",")]
-    try:
-        if len(parts) != 2:
-            raise ValueError
-        tx, rx = (int(p, 10) for p in parts)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected two pin numbers TX,RX such as 30,31, got {text!r}")
-    for p in (tx, rx):
-        if not 0 <= p <= 31:
-            raise argparse.ArgumentTypeError(f"pin {p} does not exist (pins are 0..31)")
-    if tx == rx:
-        raise argparse.ArgumentTypeError(f"TX and RX must be different pins, got {text!r}")
-    return tx, rx
 
 
 def _write_atomic(path: str, data, binary: bool) -> None:
@@ -282,74 +257,6 @@ def _write_trace(args, trace) -> None:
     _write_atomic(args.trace, trace.write_vcd if fmt == "vcd" else trace.write_log, False)
 
 
-def _console_wanted(args) -> bool:
-    return bool(args.console or args.console_out or args.console_in or args.console_pins or args.baud)
-
-
-class _ConsoleSession:
-    """The serial console of a Spin run (``--console*``, ``--baud``): set up, live output, summary."""
-
-    def __init__(self, args, out: _Out, clock_hz: int):
-        from .bench import SerialConsole, UartFormat
-        from .bench.live import ConsoleLink, stdin_keyboard
-
-        tx, rx = args.console_pins or (30, 31)
-        baud = args.baud or 115_200
-        try:
-            UartFormat(baud).bit_cycles(clock_hz)
-        except ValueError as e:
-            raise UsageError(f"--baud: {e}")
-        data = _read_bytes(args.console_in) if args.console_in else b""
-        self.keyboard = stdin_keyboard() if args.console else None
-        self.console = SerialConsole(tx, rx, baud, live_input=self.keyboard is not None)
-        if args.console_in:
-            self.console.send(data, at_seconds=args.console_in_at or 0.0)
-        self.out_path = args.console_out
-        self._stack = contextlib.ExitStack()
-        raw = None
-        if self.out_path:
-            raw = self._stack.enter_context(open(self.out_path, "wb"))
-        if self.keyboard is not None:
-            self._stack.enter_context(self.keyboard)
-        self.shows = not out.quiet
-        self.link = ConsoleLink(self.console, text_out=out.stdout if self.shows else None, raw_out=raw,
-                                keyboard=self.keyboard)
-        self.out = out
-
-    def __enter__(self) -> "_ConsoleSession":
-        return self
-
-    def __exit__(self, *exc) -> None:
-        try:
-            self.link.flush()
-            if self.link.wrote_text and not self.link.ends_with_newline:
-                self.out.stdout.write("\n")
-        finally:
-            self._stack.close()
-
-    def summary(self) -> tuple[str, str]:
-        c = self.console
-        text = f"P{c.tx}: {len(c.received):,} bytes received at {c.baud:g} baud"
-        if self.out_path:
-            text += f" (in {self.out_path})"
-        if c.sent:
-            text += f"; P{c.rx}: {len(c.sent):,} bytes sent"
-        return "console", text
-
-    def warnings(self, end_cycle: int) -> list[str]:
-        c = self.console
-        notes = []
-        if c.errors:
-            first = c.errors[0]
-            notes.append(f"console: {len(c.errors)} frame(s) on P{c.tx} without a stop bit (the first at "
-                         f"{c.seconds(first.start):.6f} s): a different baud rate (--baud), or a break")
-        late = [t for t, _ in c.sent if t >= end_cycle]
-        if late:
-            notes.append(f"console: the run ended before {len(late)} of the {len(c.sent)} bytes for P{c.rx} "
-                         f"were sent")
-        return notes
-
-
 def cmd_run(args, out: _Out) -> int:
     kind = _kind(args.target)
     if kind == "pbasic":
@@ -363,7 +270,7 @@ def cmd_run(args, out: _Out) -> int:
 
     clock = ImageHeader.parse(image).clkfreq or CLOCK_DEFAULT
     limit = _run_limit(args, clock)
-    session = _ConsoleSession(args, out, clock) if _console_wanted(args) else None
+    session = ConsoleSession(args, out, clock) if console_wanted(args) else None
     parts = [session.console] if session else []
     t0 = time.perf_counter()
     with session or contextlib.nullcontext():
@@ -421,7 +328,7 @@ def _run_pbasic(args, out: _Out) -> int:
 
     if args.engine == "python" or args.compat is not None or args.inputs is not None:
         raise UsageError("--engine, --compat and --inputs apply to Spin programs only")
-    if _console_wanted(args) or args.console_in_at is not None:
+    if console_wanted(args) or args.console_in_at is not None:
         raise UsageError("the serial console (--console, --console-out, --console-in, --console-pins, --baud) "
                          "applies to Propeller programs; a BASIC Stamp program's DEBUG text is printed and "
                          "--debug-in feeds DEBUGIN")
@@ -551,44 +458,8 @@ def cmd_trace(args, out: _Out) -> int:
         out.stdout.write(render_steps(steps, trace.clock_hz, limit=args.limit) + "\n")
         return 0
     if action == "decode":
-        return _decode_uart(args, trace, out)
+        return decode_uart_command(args, trace, out)
     raise UsageError(f"unknown trace action {action!r}")
-
-
-def _decode_uart(args, trace, out: _Out) -> int:
-    """``trace decode uart``: the bytes on one pin of a trace, as text or one line per frame."""
-    from .analysis.view import format_time
-    from .bench.terminal import stream_text
-    from .bench.uart import UartFormat, decode_uart, frame_cut_at_end
-
-    if not 0 <= args.pin < trace.pin_count:
-        raise UsageError(f"--pin {args.pin} does not exist (pins are 0..{trace.pin_count - 1})")
-    fmt = UartFormat(args.baud, inverted=args.inverted)
-    try:
-        fmt.bit_cycles(trace.clock_hz)
-    except ValueError as e:
-        raise UsageError(f"--baud: {e}")
-    lo = args.start if args.start is not None else 0
-    hi = args.end if args.end is not None else 1 << 62
-    frames = [f for f in decode_uart(trace, args.pin, fmt, hold_last=args.hold_last) if lo <= f.start <= hi]
-    if args.frames:
-        for f in frames:
-            ch = chr(f.value) if 32 <= f.value < 127 else "."
-            note = f"  {f.error} error" if f.error else ""
-            out.stdout.write(f"{f.start:>12} {format_time(f.start, trace.clock_hz):>12}  "
-                             f"${f.value:02X} {ch}{note}\n")
-    else:
-        text = stream_text(bytes(f.value for f in frames if f.error != "framing"))
-        out.stdout.write(text if not text or text.endswith("\n") else text + "\n")
-    bad = [f for f in frames if f.error]
-    if bad:
-        out.err_console.print(f"warning: {len(bad)} frame(s) on P{args.pin} without a stop bit (the first at "
-                              f"cycle {bad[0].start}): a different baud rate (--baud) or polarity (--inverted)?",
-                              markup=False)
-    if not args.hold_last and frame_cut_at_end(trace, args.pin, fmt):
-        out.err_console.print("warning: a frame was still being received when the trace ended (--hold-last "
-                              "completes it with the line's last level)", markup=False)
-    return 0
 
 
 def cmd_sidebyside(args, out: _Out) -> int:
@@ -607,25 +478,6 @@ def cmd_sidebyside(args, out: _Out) -> int:
 def _obj_search_option(p) -> None:
     p.add_argument("-L", "-I", dest="include", action="append", metavar="DIR",
                    help="add a folder to search for OBJ files (after the source's own folder)")
-
-
-def _console_options(p) -> None:
-    g = p.add_argument_group(
-        "serial console",
-        "A serial terminal on the program's TX/RX pins, as a USB serial adapter on P30/P31:\n"
-        "8 data bits, no parity, 1 stop bit. Any of these options attaches it; while it is\n"
-        "attached, the RX pin idles high. See docs/console.md.")
-    g.add_argument("--console", action="store_true",
-                   help="attach the console and print what the program sends as it arrives; when stdin is a "
-                        "terminal, the keys typed are sent (Enter sends CR) and the run keeps to real time")
-    g.add_argument("--console-out", metavar="FILE",
-                   help="write every byte received from TX to FILE (also printed live unless --quiet)")
-    g.add_argument("--console-in", metavar="FILE", help="send the bytes of FILE to RX at the baud rate")
-    g.add_argument("--console-in-at", type=_seconds_from_start, metavar="SECONDS",
-                   help="simulated time at which --console-in starts sending (default 0)")
-    g.add_argument("--console-pins", type=_pin_pair, metavar="TX,RX",
-                   help="the program's transmit and receive pins (default 30,31)")
-    g.add_argument("--baud", type=_positive_float, metavar="N", help="bits per second (default 115200)")
 
 
 def _define_option(p) -> None:
@@ -682,7 +534,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="bytecode: interpret the compiled image (default); python: run the Spin-to-Python translation")
     r.add_argument("--timing", choices=["exact", "realistic"],
                    help="BASIC Stamp only: exact command durations, or with per-instruction interpreter time")
-    _console_options(r)
+    console_options(r)
     r.add_argument("--no-progress", action="store_true", help="no progress bar")
     r.add_argument("-q", "--quiet", action="store_true", help="no summary")
     r.set_defaults(func=cmd_run)
@@ -732,22 +584,7 @@ def build_parser() -> argparse.ArgumentParser:
             a.add_argument("--changes", type=int, default=0, metavar="N", help="also list the first N changes")
         if name == "steps":
             a.add_argument("--limit", type=int, default=20, metavar="N", help="show the first N steps")
-    dc = ts.add_parser("decode", help="decode a protocol on the pins (uart: asynchronous serial)", parents=[clock],
-                       description="Decode asynchronous serial (8N1) on one pin of a trace log: the text "
-                                   "(CR, CR LF and LF as new lines) or, with --frames, one line per byte. An "
-                                   "undriven pin reads as the idle level.")
-    dc.add_argument("protocol", choices=["uart"], help="uart: asynchronous serial, 8 data bits, no parity")
-    dc.add_argument("file")
-    dc.add_argument("--pin", type=int, required=True, metavar="N", help="the pin carrying the serial data")
-    dc.add_argument("--baud", type=_positive_float, default=115_200.0, metavar="B",
-                    help="bits per second (default 115200)")
-    dc.add_argument("--inverted", action="store_true", help="the line idles low and the start bit is high")
-    dc.add_argument("--hold-last", action="store_true",
-                    help="the line keeps its last level after the trace ends (completes a frame cut by the "
-                         "end, e.g. when the program stopped during its last stop bit)")
-    dc.add_argument("--frames", action="store_true", help="one line per byte: cycle, time, value, character")
-    dc.add_argument("--start", type=int, metavar="CYCLE", help="only frames starting at or after this cycle")
-    dc.add_argument("--end", type=int, metavar="CYCLE", help="only frames starting at or before this cycle")
+    add_decode_parser(ts, [clock])
     tr.set_defaults(func=cmd_trace)
 
     s = sub.add_parser("sidebyside", help="compare two traces as stepper step sequences (e.g. BS2 vs Propeller)",
