@@ -17,13 +17,13 @@ __all__ = ["console_options", "console_wanted", "ConsoleSession", "add_decode_pa
 
 
 def baud_rate(text: str) -> float:
-    """``--baud``: a finite number above 0 (whether the clock allows it is checked with the clock)."""
+    """``--baud``: a finite number of at least 1 (whether the clock allows it is checked with the clock)."""
     try:
         v = float(text.replace("_", ""))
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a number above 0, got {text!r}")
-    if not math.isfinite(v) or v <= 0:
-        raise argparse.ArgumentTypeError(f"expected a number above 0, got {text!r}")
+        raise argparse.ArgumentTypeError(f"expected a number of bits per second, got {text!r}")
+    if not math.isfinite(v) or v < 1:
+        raise argparse.ArgumentTypeError(f"expected a number of bits per second of 1 or more, got {text!r}")
     return v
 
 

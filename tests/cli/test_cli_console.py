@@ -79,9 +79,11 @@ def test_a_wrong_baud_rate_gives_framing_warnings_not_text(tmp_path):
 
 
 @pytest.mark.parametrize("args, message", [
-    (["--baud", "nan"], "--baud: expected a number above 0"),
-    (["--baud", "inf"], "--baud: expected a number above 0"),
-    (["--baud", "0"], "--baud: expected a number above 0"),
+    (["--baud", "nan"], "--baud: expected a number of bits per second of 1 or more"),
+    (["--baud", "inf"], "--baud: expected a number of bits per second of 1 or more"),
+    (["--baud", "0"], "--baud: expected a number of bits per second of 1 or more"),
+    (["--baud", "1e-300"], "--baud: expected a number of bits per second of 1 or more"),
+    (["--baud", "fast"], "--baud: expected a number of bits per second"),
     (["--baud", "50e6"], "too fast for a 80,000,000 Hz clock"),
     (["--console-pins", "30"], "expected two pin numbers TX,RX"),
     (["--console-pins", "30,32"], "pin 32 does not exist"),
