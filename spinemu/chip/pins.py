@@ -10,6 +10,8 @@ as driven and the others from the input model (:mod:`spinemu.chip.inputs`).
 """
 from __future__ import annotations
 
+import heapq
+
 from ..trace import PinTrace
 from .cog import PIN_WAIT, RUNNING, STOPPED, Cog
 from .control import Reschedule
@@ -41,18 +43,19 @@ class Pins:
         return o | (self.inputs.levels(t) & ~d & 0xFFFFFFFF)
 
     def record_cog_pins(self, c: Cog, t: int) -> None:
-        """Add cog ``c``'s pin drive at cycle ``t`` to the pin record."""
-        out = c.outa
-        if self.counters_on:
-            out |= self.counters.outputs(c, t)
+        """Add cog ``c``'s DIRA and OUTA at cycle ``t`` to the pin record (counter outputs are added from
+        the counters' own history when the trace is built)."""
         self._seq += 1
-        self.pin_events.append((t, self._seq, c.id, c.dira, out, c.state != STOPPED))
+        self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, c.state != STOPPED))
 
     def note_pins(self, c: Cog, t: int) -> None:
-        """Cog ``c`` changed DIRA, OUTA or a counter at cycle ``t`` (the pins change then)."""
-        self.record_cog_pins(c, t)
+        """Cog ``c`` changed DIRA or OUTA at cycle ``t`` (the pins change then)."""
+        self._seq += 1
+        self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, c.state != STOPPED))
         if self._pin_waiters:
             self._wake_pin_waiters(t)
+            if self.counters.feedback_on:       # a feedback output follows its input one clock later
+                self._wake_pin_waiters(t + 1)
 
     def wait_pins(self, c: Cog, mask: int, state: int, equal: bool, tf: int) -> int:
         issue, after = self.timing.waitpin[equal]
@@ -86,18 +89,28 @@ class Pins:
             self._request_preemption()
 
     def _build_trace(self, end: int) -> PinTrace:
+        """The pin trace up to ``end``: the pin record, with counter outputs from the counters' history."""
         trace = PinTrace(self.clock_hz, end_cycle=end)
         trace.record(0, 0, 0)
         state = {}
-        for t, _, cog_id, dira, outa, running in sorted(self.pin_events):
+        events = sorted(self.pin_events)
+        if self.counters_on:
+            events = heapq.merge(events, ((t, -1, cog, None, None, None) for t, cog in self.counters.trace_marks(end)))
+            ctr = self.counters.trace_outputs
+        for t, _, cog_id, dira, outa, running in events:
             if t > end:
                 break
-            if running:
-                state[cog_id] = (dira, outa)
+            if dira is None:                    # a counter output may change: the cog's drive again
+                if cog_id not in state:
+                    continue
+                dira, outa = state[cog_id][0], state[cog_id][2]
+                state[cog_id] = (dira, outa | ctr(cog_id, t), outa)
+            elif running:
+                state[cog_id] = (dira, outa | ctr(cog_id, t) if self.counters_on else outa, outa)
             else:
                 state.pop(cog_id, None)
             d = o = 0
-            for dd, oo in state.values():
+            for dd, oo, _ in state.values():
                 d |= dd
                 o |= dd & oo
             trace.record(t, d, o)
