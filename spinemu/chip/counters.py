@@ -137,12 +137,13 @@ class _Counter:
     summed from the previous stretch (an input mode, settled on demand).
     """
 
-    __slots__ = ("ctr", "frq", "phs0", "acc0", "t0", "mode", "known", "index", "ck_t", "ck_n", "flushed")
+    __slots__ = ("ctr", "frq", "phs0", "acc0", "t0", "mode", "known", "index", "ck_t", "ck_n", "flushed", "sig")
 
     def __init__(self):
         self.ctr = self.frq = self.phs0 = self.acc0 = self.t0 = self.mode = self.index = self.flushed = 0
         self.known = True
         self.ck_t = self.ck_n = 0
+        self.sig = None
 
     @property
     def apin(self) -> int:
@@ -171,16 +172,22 @@ class _Counter:
     # outputs --------------------------------------------------------------------
     def signal(self) -> Optional[Phase]:
         """APIN's output as a phase signal (accumulator output modes), else ``None``."""
+        if self.sig is not None:
+            return self.sig
         mode = self.mode
         base = self.acc0 - self.frq * self.t0
         if mode in (MODE_NCO, MODE_NCO_DIFF):
-            return Phase(base, self.frq, 1 << 32, ((1 << 31, 1 << 32),))
-        if mode in (MODE_DUTY, MODE_DUTY_DIFF):     # carry of the addition that ended at v: PHS(v) < FRQ
-            return Phase(base, self.frq, 1 << 32, ((0, self.frq),) if self.frq else ())
-        if mode in (MODE_PLL, MODE_PLL_DIFF):
+            sig = Phase(base, self.frq, 1 << 32, ((1 << 31, 1 << 32),))
+        elif mode in (MODE_DUTY, MODE_DUTY_DIFF):   # carry of the addition that ended at v: PHS(v) < FRQ
+            sig = Phase(base, self.frq, 1 << 32, ((0, self.frq),) if self.frq else ())
+        elif mode in (MODE_PLL, MODE_PLL_DIFF):
             k = 34 - self.plldiv
-            return Phase(base, self.frq, 1 << (k + 1), ((1 << k, 1 << (k + 1)),))
-        return None
+            sig = Phase(base, self.frq, 1 << (k + 1), ((1 << k, 1 << (k + 1)),))
+        else:
+            return None
+        if self.known:
+            self.sig = sig
+        return sig
 
     def pll_period(self) -> float:
         """Clocks per period of the PLL output (``inf`` when FRQ is 0)."""
@@ -219,10 +226,13 @@ class _Counter:
         mode = self.mode
         if mode not in _PHASE_OUT:
             return 0
-        if mode >= MODE_DUTY and t <= self.t0:
-            level = 0
+        acc = self.acc0 + self.frq * (t - self.t0)
+        if mode >= MODE_DUTY:                       # the carry of the addition that ended at t
+            level = 1 if t > self.t0 and (acc >> 32) != ((acc - self.frq) >> 32) else 0
+        elif mode >= MODE_NCO:
+            level = (acc >> 31) & 1
         else:
-            level = self.signal().at(t)
+            level = (acc >> (34 - self.plldiv)) & 1
         if level:
             return 1 << self.apin if self.apin < 32 else 0
         return 1 << self.bpin if mode & 1 and self.bpin < 32 else 0
@@ -356,6 +366,14 @@ class Counters:
         a, b = self.units[c.id]
         return a.cur.mode in _READS_PINS or b.cur.mode in _READS_PINS
 
+    def segment_at(self, cog: int, ab: int, t: int) -> _Counter:
+        """The stretch of counter ``ab`` (0 = A) of cog ``cog`` in force at cycle ``t``, its PHS settled."""
+        unit = self.units[cog][ab]
+        seg = unit.at(t)
+        if not seg.known:
+            self._settle(unit, seg)
+        return seg
+
     # PHS in the input modes ------------------------------------------------------
     def _settle(self, unit: _Unit, seg: _Counter) -> None:
         """Work out ``seg.phs0`` from the stretches before it (they ended in an input mode)."""
@@ -369,7 +387,7 @@ class Counters:
                 value = self._input_phs(unit, prev, nxt.t0, False)
             else:
                 value = prev.acc(nxt.t0)
-            nxt.acc0, nxt.phs0, nxt.known = value, value & _M, True
+            nxt.acc0, nxt.phs0, nxt.known, nxt.sig = value, value & _M, True, None
 
     def _input_phs(self, unit: _Unit, seg: _Counter, t: int, checkpoint: bool) -> int:
         if not seg.known:
@@ -460,9 +478,13 @@ class Counters:
         """:meth:`outputs` by cog number, from the counters' history; ``feedback=False`` leaves feedback outputs out."""
         out = 0
         for unit in self.units[cog]:
-            seg = unit.at(t)
+            seg = unit.cur
+            if t < seg.t0:
+                seg = unit.at(t)
             mode = seg.mode
             if mode in _PHASE_OUT:
+                if not seg.known:
+                    self._settle(unit, seg)
                 out |= seg.outputs(t)
             elif mode in _FEEDBACK and feedback and seg.bpin < 32:
                 if not self.history.level(seg.apin, t - 1, False):
@@ -479,8 +501,8 @@ class Counters:
         for c in self.chip.cogs:
             if c.state == "stopped" or not c.dira:
                 continue
-            for unit in self.units[c.id]:
-                seg = unit.at(t + 1)
+            for ab, unit in enumerate(self.units[c.id]):
+                seg = self.segment_at(c.id, ab, t + 1)
                 if not seg.output_mask() & c.dira:
                     continue
                 nxt = None
@@ -498,42 +520,41 @@ class Counters:
         return best
 
     # the trace ---------------------------------------------------------------
-    def trace_outputs(self, cog: int, t: int) -> int:
-        """:meth:`outputs_at` as the trace shows it: PLL outputs faster than the trace takes are low."""
-        out = 0
-        for unit in self.units[cog]:
-            seg = unit.at(t)
-            if seg.mode in (MODE_PLL, MODE_PLL_DIFF) and seg.pll_period() < PLL_TRACE_MIN_PERIOD:
-                continue
-            if seg.mode in _PHASE_OUT:
-                out |= seg.outputs(t)
-            elif seg.mode in _FEEDBACK and seg.bpin < 32 and not self.history.level(seg.apin, t - 1, False):
-                out |= 1 << seg.bpin
-        return out
+    def trace_mask(self, seg: _Counter, t: int) -> int:
+        """The pins stretch ``seg`` drives high at ``t`` as the trace shows them (fast PLL outputs low)."""
+        mode = seg.mode
+        if mode in _PLL and seg.pll_period() < PLL_TRACE_MIN_PERIOD:
+            return 0
+        if mode in _PHASE_OUT:
+            return seg.outputs(t)
+        if mode in _FEEDBACK and seg.bpin < 32 and not self.history.level(seg.apin, t - 1, False):
+            return 1 << seg.bpin
+        return 0
 
     def trace_marks(self, end: int) -> list:
-        """``(cycle, cog)`` at which a cog's counter outputs may change, up to ``end``, in time order.
+        """``(cycle, cog, counter, mask)`` up to ``end``, in time order: from ``cycle`` on, counter
+        ``counter`` (0 = A) of cog ``cog`` drives the pins in ``mask`` high (before DIRA gating).
 
-        Only stretches while the cog runs with DIRA set on the counter's
-        pins give edges; at most :data:`MAX_EDGES` of them (a warning says
-        when the rest are left out).
+        Every stretch starts with one; edges follow only while the cog runs
+        with DIRA set on the counter's pins, at most :data:`MAX_EDGES` of
+        them (a warning says when the rest are left out).
         """
-        streams = []
-        for cog in range(8):
-            for unit in self.units[cog]:
-                if any(seg.mode in _OUTPUTS for seg in unit.segs):
-                    streams.append(self._unit_marks(cog, unit, end))
+        streams = [self._unit_marks(cog, ab, unit, end)
+                   for cog in range(8) for ab, unit in enumerate(self.units[cog])
+                   if any(seg.mode in _OUTPUTS for seg in unit.segs)]
+        if not streams:
+            return []
         marks = []
-        for t in heapq.merge(*streams):
+        for mark in (streams[0] if len(streams) == 1 else heapq.merge(*streams)):
             if len(marks) >= MAX_EDGES:
                 self.chip.warnings.append(
                     f"counter output edges exceed {MAX_EDGES:,}: later counter edges are not recorded in the trace")
                 break
-            marks.append(t)
+            marks.append(mark)
         self.edges_recorded = len(marks)
         return marks
 
-    def _unit_marks(self, cog: int, unit: _Unit, end: int):
+    def _unit_marks(self, cog: int, ab: int, unit: _Unit, end: int):
         segs = unit.segs
         hist = self.history
         for i, seg in enumerate(segs):
@@ -541,26 +562,35 @@ class Counters:
             stop = min(segs[i + 1].t0 if i + 1 < len(segs) else end + 1, end + 1) - 1   # last cycle of the stretch
             if start > end:
                 return
-            yield (start, cog)
+            if not seg.known:
+                self._settle(unit, seg)
+            yield (start, cog, ab, self.trace_mask(seg, start))
             mask = seg.output_mask()
-            if not mask or stop <= start:
-                continue
-            if seg.mode in (MODE_PLL, MODE_PLL_DIFF) and seg.pll_period() < PLL_TRACE_MIN_PERIOD:
+            if not mask or stop <= start or (seg.mode in _PLL and seg.pll_period() < PLL_TRACE_MIN_PERIOD):
                 continue
             for lo, hi in self._driving(cog, mask, start, stop):
-                if lo > start:
-                    yield (lo, cog)
                 if seg.mode in _PHASE_OUT:
+                    # each change flips the output between APIN high and BPIN high (or nothing)
+                    cur = seg.outputs(lo)
+                    if lo > start:
+                        yield (lo, cog, ab, cur)
+                    high = 1 << seg.apin if seg.apin < 32 else 0
+                    low = 1 << seg.bpin if seg.mode & 1 and seg.bpin < 32 else 0
                     for te in seg.edges(lo, hi):
-                        yield (te, cog)
-                else:
+                        cur = low if cur == high else high
+                        yield (te, cog, ab, cur)
+                else:                               # feedback: BPIN = !A one clock later
+                    bpin = 1 << seg.bpin
+                    if lo > start:
+                        yield (lo, cog, ab, self.trace_mask(seg, lo))
                     prev = None
                     for s, e, sig in hist.pieces(seg.apin, lo - 2, hi - 1, False):   # A's changes in (lo-1, hi-1]
+                        phase = not isinstance(sig, int)
                         if prev is not None and s + 2 > lo:
-                            yield (s + 2, cog)
-                        if not isinstance(sig, int):
+                            yield (s + 2, cog, ab, 0 if (sig.at(s + 1) if phase else sig) else bpin)
+                        if phase:
                             for te in sig.changes(s + 1, e):
-                                yield (te + 1, cog)
+                                yield (te + 1, cog, ab, 0 if sig.at(te) else bpin)
                         prev = sig
 
     def _driving(self, cog: int, mask: int, a: int, b: int) -> list:

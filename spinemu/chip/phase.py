@@ -147,13 +147,14 @@ class Phase:
     ([0, 0, 1, 1, 0, 0, 1, 1], 4, 2)
     """
 
-    __slots__ = ("base", "step", "modulus", "window")
+    __slots__ = ("base", "step", "modulus", "window", "_changes")
 
     def __init__(self, base: int, step: int, modulus: int, window: tuple):
         self.modulus = modulus
         self.step = step % modulus
         self.base = base % modulus
         self.window = window
+        self._changes = None        # the phases just after a change (computed on first use)
 
     def __repr__(self):
         return f"Phase(base={self.base}, step={self.step}, modulus={self.modulus}, window={self.window})"
@@ -222,7 +223,9 @@ class Phase:
         f, m = self.step, self.modulus
         if f == 0 or b <= a:
             return
-        window = _normal(self._edge_window(True) + self._edge_window(False))
+        window = self._changes
+        if window is None:
+            window = self._changes = _normal(self._edge_window(True) + self._edge_window(False))
         if not window:
             return
         base = self.base

@@ -162,8 +162,8 @@ class PinHistory:
             if outa & bit:
                 out.append((s, e, 1))
                 return
-            for unit in counters.units[cog]:
-                seg = unit.at(v)
+            for ab in (0, 1):
+                seg = counters.segment_at(cog, ab, v)
                 sig = seg.pin_signal(pin, v)
                 if sig is None:
                     continue

@@ -92,21 +92,23 @@ class Pins:
         """The pin trace up to ``end``: the pin record, with counter outputs from the counters' history."""
         trace = PinTrace(self.clock_hz, end_cycle=end)
         trace.record(0, 0, 0)
-        state = {}
+        state = {}                              # cog: (dira, dira & (outa | counter outputs), outa)
         events = sorted(self.pin_events)
-        if self.counters_on:
-            events = heapq.merge(events, ((t, -1, cog, None, None, None) for t, cog in self.counters.trace_marks(end)))
-            ctr = self.counters.trace_outputs
+        ctr = [[0, 0] for _ in range(8)]        # what each cog's counters A and B drive high
+        if self.counters_on:                    # counter marks sort before pin events of the same cycle
+            events = heapq.merge(events, ((t, -1, cog, ab, mask, None)
+                                          for t, cog, ab, mask in self.counters.trace_marks(end)))
         for t, _, cog_id, dira, outa, running in events:
             if t > end:
                 break
-            if dira is None:                    # a counter output may change: the cog's drive again
+            if running is None:                 # a counter output changed: dira, outa are (counter, mask)
+                ctr[cog_id][dira] = outa
                 if cog_id not in state:
                     continue
-                dira, outa = state[cog_id][0], state[cog_id][2]
-                state[cog_id] = (dira, outa | ctr(cog_id, t), outa)
+                dira, _, outa = state[cog_id]
+                state[cog_id] = (dira, outa | ctr[cog_id][0] | ctr[cog_id][1], outa)
             elif running:
-                state[cog_id] = (dira, outa | ctr(cog_id, t) if self.counters_on else outa, outa)
+                state[cog_id] = (dira, outa | ctr[cog_id][0] | ctr[cog_id][1], outa)
             else:
                 state.pop(cog_id, None)
             d = o = 0
