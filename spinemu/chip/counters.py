@@ -94,8 +94,7 @@ __all__ = ["Counters", "PllOutput", "MODE_NAMES", "MODE_NCO", "MODE_DUTY", "MAX_
 _M = 0xFFFFFFFF
 (MODE_OFF, MODE_PLL_INTERNAL, MODE_PLL, MODE_PLL_DIFF, MODE_NCO, MODE_NCO_DIFF, MODE_DUTY,
  MODE_DUTY_DIFF) = range(8)
-MODE_POS, MODE_POSEDGE, MODE_NEG, MODE_NEGEDGE = 0b01000, 0b01010, 0b01100, 0b01110
-MODE_NEVER, MODE_ALWAYS = 0b10000, 0b11111
+MODE_ALWAYS = 0b11111
 
 #: the manual's names of the 32 modes
 MODE_NAMES = (
@@ -137,10 +136,10 @@ class _Counter:
     summed from the previous stretch (an input mode, settled on demand).
     """
 
-    __slots__ = ("ctr", "frq", "phs0", "acc0", "t0", "mode", "known", "index", "ck_t", "ck_n", "flushed", "sig")
+    __slots__ = ("ctr", "frq", "phs0", "acc0", "t0", "mode", "known", "index", "ck_t", "ck_n", "sig")
 
     def __init__(self):
-        self.ctr = self.frq = self.phs0 = self.acc0 = self.t0 = self.mode = self.index = self.flushed = 0
+        self.ctr = self.frq = self.phs0 = self.acc0 = self.t0 = self.mode = self.index = 0
         self.known = True
         self.ck_t = self.ck_n = 0
         self.sig = None

@@ -91,7 +91,7 @@ class PinHistory:
 
     # levels at one cycle ----------------------------------------------------
     def driven(self, t: int, feedback: bool = True) -> tuple[int, int]:
-        """``(dir, out)`` of the pins at cycle ``t``: OR over the running cogs of DIRA and ``DIRA & (OUTA | counters)``."""
+        """``(dir, out)`` at cycle ``t``: OR over the running cogs of DIRA and of ``DIRA & (OUTA | counters)``."""
         self._update()
         counters = self.chip.counters
         d = o = 0

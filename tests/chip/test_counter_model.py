@@ -104,7 +104,8 @@ def make_scenario(seed):
         return (r.choice(modes) << 26) | (r.randrange(8) << 23) | (r.randrange(PINS) << 9) | apin
 
     def frq():
-        return r.choice([r.randrange(1 << 32), r.randrange(1 << 27, 1 << 30), 1 << 30, 1 << 31, r.randrange(1, 1 << 26)])
+        return r.choice([r.randrange(1 << 32), r.randrange(1 << 27, 1 << 30), 1 << 30, 1 << 31,
+                         r.randrange(1, 1 << 26)])
 
     mode = r.randrange(8, 32)
     apin = r.randrange(PINS)
@@ -169,11 +170,11 @@ def model(sc):
         if u in drives:
             d2, o2 = drives[u]
         phs[u] = ctrs[(1, 0)].acc & M32
-        out3 = ctrs[(3, 0)].outputs(carries[(3, 0)], (3, 0) in now) | ctrs[(3, 1)].outputs(carries[(3, 1)], (3, 1) in now)
-        shown3 = (ctrs[(3, 0)].outputs(carries[(3, 0)], (3, 0) in now, True)
-                  | ctrs[(3, 1)].outputs(carries[(3, 1)], (3, 1) in now, True))
-        out1 = ctrs[(1, 0)].outputs(carries[(1, 0)], (1, 0) in now)
-        shown1 = ctrs[(1, 0)].outputs(carries[(1, 0)], (1, 0) in now, True)
+        def out(cog, ab, shown=False):
+            return ctrs[(cog, ab)].outputs(carries[(cog, ab)], (cog, ab) in now, shown)
+
+        out3, shown3 = out(3, 0) | out(3, 1), out(3, 0, True) | out(3, 1, True)
+        out1, shown1 = out(1, 0), out(1, 0, True)
         d = d2 | sc["dira"][1] | sc["dira"][3]
 
         def level(fb, out3=out3):
@@ -235,6 +236,10 @@ def test_counters_match_the_clock_by_clock_model(seed):
                 assert (sig if isinstance(sig, int) else sig.at(v)) == (levels[v] >> pin) & 1, (pin, v)
     for u in range(2, T_END, 7):
         assert history.levels(u) == levels[u], u
+    for a in range(5, T_END - 1, 97):
+        pin = a % PINS
+        expect = next((v for v in range(a + 1, T_END + 1) if (levels[v] ^ levels[v - 1]) >> pin & 1), None)
+        assert history.next_change(pin, a, horizon=T_END - a) == expect, (pin, a)
     changes = chip._build_trace(T_END).changes
     state, i = (0, 0), 0
     for u in range(T_END + 1):
