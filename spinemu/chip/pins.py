@@ -3,10 +3,14 @@
 :class:`Pins` is a mixin of :class:`spinemu.chip.chip.Chip`.  ``dir`` is the
 OR of the running cogs' DIRA; ``out`` the OR of ``DIRA & (OUTA | counter
 outputs)`` (Propeller Manual v1.2, "I/O Pins").  A change is recorded at the
-cycle of the interpreter instruction that writes the register + 4; the
-record is sorted and folded into a :class:`spinemu.trace.PinTrace` at the end
-of the run (cogs may run slightly out of time order).  INA reads driven pins
-as driven and the others from the input model (:mod:`spinemu.chip.inputs`).
+cycle of the interpreter instruction that writes the register + 4.  The
+record (``pin_events``) holds what each cog wrote to DIRA and OUTA; at the
+end of the run it is sorted (cogs may run slightly out of time order) and
+folded, with the counter outputs from the counters' own history
+(:meth:`spinemu.chip.counters.Counters.trace_marks`), into a
+:class:`spinemu.trace.PinTrace`.  INA reads driven pins as driven and the
+others from the input model (:mod:`spinemu.chip.inputs`); the pins as they
+were at an earlier cycle are in :mod:`spinemu.chip.pinhistory`.
 """
 from __future__ import annotations
 

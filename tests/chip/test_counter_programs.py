@@ -251,3 +251,23 @@ def test_waitpne_wakes_on_a_feedback_edge_exactly_as_on_an_input_edge_at_that_cy
     r2, _, _ = run("wait_input", inputs=PinStimulus([(rise + 1, 2, 0)], initial=2), cycles=300_000)
     assert pin_changes(r1.trace, 1)[-1] == (rise + 1, 0)
     assert pin_changes(r1.trace, 2) == pin_changes(r2.trace, 2) != []
+
+
+def test_waitpeq_and_waitpne_wake_on_nco_edges_as_on_input_edges_at_the_same_cycles():
+    r, _, _ = run("wait_nco", cycles=2_000_000)
+    p2, p3 = pin_changes(r.trace, 2), pin_changes(r.trace, 3)
+    assert len(p3) == 20 and [level for _, level in p3] == [1, 0] * 10
+    twin, _, _ = run("wait_edges", cycles=2_000_000, inputs=PinStimulus([(t, 1 << 2, level << 2) for t, level in p2]))
+    assert pin_changes(twin.trace, 3) == p3
+
+
+def test_reads_pins_says_which_counter_modes_make_a_phs_read_depend_on_the_pins():
+    chip = Chip(build("all_modes"), compat="chip")
+    chip._boot()
+    cog = chip.cogs[0]
+    expect = {m: 8 <= m <= 15 or 17 <= m <= 30 for m in range(32)}
+    got = {}
+    for m in range(32):
+        chip.counters.write(cog, 1, m << 26, 100 + m)       # CTRB
+        got[m] = chip.counters.reads_pins(cog)
+    assert got == expect
