@@ -223,8 +223,6 @@ class Chip(Pins, Listeners, Scheduler):
             self._unpark(c, t)
         if c in self._pin_waiters:
             self._pin_waiters.remove(c)
-        if self.counters_on:
-            self.counters.flush(c, t)
         c.state = STOPPED
         self._cogs_changed = True
         c.pin_wait = None
@@ -339,19 +337,17 @@ class Chip(Pins, Listeners, Scheduler):
             self._boot()
         reason = self._schedule(limit, progress)
         end = self.now if reason != "cycle limit" else limit
-        if self.counters_on:
-            for c in self.cogs:
-                if c.state != STOPPED:
-                    self.counters.flush(c, end)
         if self.pin_listeners:      # pins nothing can change any more stay as they are for ever
             self._deliver_pins(_NEVER if reason in _FINAL_REASONS else end + 1, end + 1)
         wall = time.perf_counter() - wall
         trace = self._build_trace(end)
+        self.warnings.extend(self.counters.end_warnings(end))
         per_cog = {c.id: c.bytecodes for c in self.cogs if c.bytecodes}
         stats = {"bytecodes": sum(per_cog.values()), "bytecodes_per_cog": per_cog,
                  "wall_seconds": wall, "simulated_seconds": end / self.clock_hz if self.clock_hz else 0.0}
         stats["realtime_factor"] = stats["simulated_seconds"] / wall if wall > 0 else 0.0
         stats.update(self._ff_stats())
+        stats["pll"] = [p._asdict() for p in self.counters.pll_outputs(end)]
         return RunResult(trace, bytes(self.mem[:HUB_SIZE]), end, reason, list(self.cog_events),
                          list(self.warnings), stats)
 
