@@ -140,6 +140,7 @@ class Chip(Pins, Listeners, Scheduler):
             self.lock_used[0] = True        # spinsim keeps lock 0 for itself
         self.clock_hz = self.header.clkfreq
         from .counters import Counters
+        from .pinfold import PinFold
         self.counters = Counters(self)
         self.counters_on = False        # some counter is in an output mode (else pins skip them)
         self.registers = Registers(self)
@@ -151,6 +152,7 @@ class Chip(Pins, Listeners, Scheduler):
         self._handlers = list(self.handlers)      # the real ones, while a preemption is pending
         self._preempt = False
         self.pin_events: list = []          # (cycle, seq, cog, dira, outa, running)
+        self.pin_fold = PinFold(self)       # pin events and counter outputs folded into pin states (pinfold.py)
         self._init_listeners()              # live pin listeners (listen.py)
         self.cog_events: list = []
         self.warnings: list = []
@@ -338,7 +340,7 @@ class Chip(Pins, Listeners, Scheduler):
         reason = self._schedule(limit, progress)
         end = self.now if reason != "cycle limit" else limit
         if self.pin_listeners:      # pins nothing can change any more stay as they are for ever
-            self._deliver_pins(_NEVER if reason in _FINAL_REASONS else end + 1, end + 1)
+            self._deliver_pins(_NEVER if reason in _FINAL_REASONS else end + 1, end + 1, fold_to=end + 1)
         wall = time.perf_counter() - wall
         trace = self._build_trace(end)
         self.warnings.extend(self.counters.end_warnings(end))

@@ -51,8 +51,10 @@ constant or counter-driven between recorded changes, so a read sums over
 pieces in closed form, and only when PHS is read (at the moment the reading
 instruction reads it; by then every other cog has run up to that moment:
 the scheduler orders register reads by :func:`spinemu.chip.timing.access_offsets`).
-Pin edges of counter outputs go into the trace when the run ends
-(:meth:`Counters.trace_marks`); WAITPEQ/WAITPNE wake on them during the run.
+Counter outputs reach the trace and the live pin listeners from this
+history, as marks where they change (:mod:`spinemu.chip.countermarks`,
+folded with the pin record by :mod:`spinemu.chip.pinfold`); WAITPEQ/WAITPNE
+wake on them during the run.
 
 PLL outputs.  A PLL output at tens of MHz cannot be a list of edges: an
 output whose period is at least :data:`PLL_TRACE_MIN_PERIOD` clocks is
@@ -80,7 +82,6 @@ from the same history.
 """
 from __future__ import annotations
 
-import heapq
 from bisect import bisect_right
 from collections import namedtuple
 from typing import Optional
@@ -112,8 +113,9 @@ _READS_PINS = frozenset(range(8, 16)) | frozenset(range(17, 31))
 _OUTPUTS = _PHASE_OUT | _FEEDBACK
 _PLL = frozenset({MODE_PLL_INTERNAL, MODE_PLL, MODE_PLL_DIFF})
 
-#: counter output edges put into one run's trace before it stops taking them (a
-#: 40 MHz DUTY output would otherwise fill memory); a warning tells when it happens
+#: counter output changes put into one run's trace (and handed to pin listeners) before
+#: it stops taking them (a 40 MHz DUTY output would otherwise fill memory); a warning
+#: tells when it happens (:mod:`spinemu.chip.countermarks`)
 MAX_EDGES = 2_000_000
 #: PLL outputs with a period of at least this many clocks (5 MHz at 80 MHz) appear
 #: in the trace edge by edge; faster ones are held low there and reported by frequency
@@ -491,8 +493,8 @@ class Counters:
         return out
 
     def flush(self, c, t: int) -> None:
-        """Kept for engines that call it before changing pins: counter edges now go into the trace
-        from the counters' history when the run ends (:meth:`trace_marks`), so there is nothing to do."""
+        """Kept for engines that call it before changing pins: counter outputs reach the trace and the
+        pin listeners from the counters' history (:mod:`spinemu.chip.countermarks`), so there is nothing to do."""
 
     def next_edge(self, t: int) -> Optional[int]:
         """The first counter output change of any running cog after ``t`` on a pin it drives (for WAITPEQ/WAITPNE)."""
@@ -517,98 +519,6 @@ class Counters:
                     if cand is not None and cand > t and (best is None or cand < best):
                         best = cand
         return best
-
-    # the trace ---------------------------------------------------------------
-    def trace_mask(self, seg: _Counter, t: int) -> int:
-        """The pins stretch ``seg`` drives high at ``t`` as the trace shows them (fast PLL outputs low)."""
-        mode = seg.mode
-        if mode in _PLL and seg.pll_period() < PLL_TRACE_MIN_PERIOD:
-            return 0
-        if mode in _PHASE_OUT:
-            return seg.outputs(t)
-        if mode in _FEEDBACK and seg.bpin < 32 and not self.history.level(seg.apin, t - 1, False):
-            return 1 << seg.bpin
-        return 0
-
-    def trace_marks(self, end: int) -> list:
-        """``(cycle, cog, counter, mask)`` up to ``end``, in time order: from ``cycle`` on, counter
-        ``counter`` (0 = A) of cog ``cog`` drives the pins in ``mask`` high (before DIRA gating).
-
-        Every stretch starts with one; edges follow only while the cog runs
-        with DIRA set on the counter's pins, at most :data:`MAX_EDGES` of
-        them (a warning says when the rest are left out).
-        """
-        streams = [self._unit_marks(cog, ab, unit, end)
-                   for cog in range(8) for ab, unit in enumerate(self.units[cog])
-                   if any(seg.mode in _OUTPUTS for seg in unit.segs)]
-        if not streams:
-            return []
-        marks = []
-        for mark in (streams[0] if len(streams) == 1 else heapq.merge(*streams)):
-            if len(marks) >= MAX_EDGES:
-                self.chip.warnings.append(
-                    f"counter output edges exceed {MAX_EDGES:,}: later counter edges are not recorded in the trace")
-                break
-            marks.append(mark)
-        self.edges_recorded = len(marks)
-        return marks
-
-    def _unit_marks(self, cog: int, ab: int, unit: _Unit, end: int):
-        segs = unit.segs
-        hist = self.history
-        for i, seg in enumerate(segs):
-            start = max(seg.t0, 0)
-            stop = min(segs[i + 1].t0 if i + 1 < len(segs) else end + 1, end + 1) - 1   # last cycle of the stretch
-            if start > end:
-                return
-            if not seg.known:
-                self._settle(unit, seg)
-            yield (start, cog, ab, self.trace_mask(seg, start))
-            mask = seg.output_mask()
-            if not mask or stop <= start or (seg.mode in _PLL and seg.pll_period() < PLL_TRACE_MIN_PERIOD):
-                continue
-            for lo, hi in self._driving(cog, mask, start, stop):
-                if seg.mode in _PHASE_OUT:
-                    # each change flips the output between APIN high and BPIN high (or nothing)
-                    cur = seg.outputs(lo)
-                    if lo > start:
-                        yield (lo, cog, ab, cur)
-                    high = 1 << seg.apin if seg.apin < 32 else 0
-                    low = 1 << seg.bpin if seg.mode & 1 and seg.bpin < 32 else 0
-                    for te in seg.edges(lo, hi):
-                        cur = low if cur == high else high
-                        yield (te, cog, ab, cur)
-                else:                               # feedback: BPIN = !A one clock later
-                    bpin = 1 << seg.bpin
-                    if lo > start:
-                        yield (lo, cog, ab, self.trace_mask(seg, lo))
-                    prev = None
-                    for s, e, sig in hist.pieces(seg.apin, lo - 2, hi - 1, False):   # A's changes in (lo-1, hi-1]
-                        phase = not isinstance(sig, int)
-                        if prev is not None and s + 2 > lo:
-                            yield (s + 2, cog, ab, 0 if (sig.at(s + 1) if phase else sig) else bpin)
-                        if phase:
-                            for te in sig.changes(s + 1, e):
-                                yield (te + 1, cog, ab, 0 if sig.at(te) else bpin)
-                        prev = sig
-
-    def _driving(self, cog: int, mask: int, a: int, b: int) -> list:
-        """Stretches ``(lo, hi]`` within ``[a, b]`` in which cog ``cog`` runs with DIRA on some pin of ``mask``."""
-        hist = self.history
-        out = []
-        lo = None
-        cuts = [a] + [x for x in hist.drive_times(cog, a, b)]
-        for x in cuts:
-            dira, _, running = hist.cog_state(cog, x)
-            on = running and dira & mask
-            if on and lo is None:
-                lo = x
-            elif not on and lo is not None:
-                out.append((lo, x))
-                lo = None
-        if lo is not None:
-            out.append((lo, b))
-        return out
 
     # PLL report ------------------------------------------------------------------
     def pll_outputs(self, end: Optional[int] = None) -> list:

@@ -4,18 +4,17 @@
 OR of the running cogs' DIRA; ``out`` the OR of ``DIRA & (OUTA | counter
 outputs)`` (Propeller Manual v1.2, "I/O Pins").  A change is recorded at the
 cycle of the interpreter instruction that writes the register + 4.  The
-record (``pin_events``) holds what each cog wrote to DIRA and OUTA; at the
-end of the run it is sorted (cogs may run slightly out of time order) and
-folded, with the counter outputs from the counters' own history
-(:meth:`spinemu.chip.counters.Counters.trace_marks`), into a
-:class:`spinemu.trace.PinTrace`.  INA reads driven pins as driven and the
-others from the input model (:mod:`spinemu.chip.inputs`); the pins as they
-were at an earlier cycle are in :mod:`spinemu.chip.pinhistory`.
-Live pin listeners (the bench's view of a run) are in :mod:`.listen`.
+record (``pin_events``) holds what each cog wrote to DIRA and OUTA (cogs may
+append slightly out of time order); :class:`spinemu.chip.pinfold.PinFold`
+folds it in time order, with the counter outputs from the counters' own
+history (:mod:`spinemu.chip.countermarks`), into combined pin states: the
+live pin listeners (the bench's view of a run, :mod:`.listen`) read them as
+the run goes, and at the end they make the :class:`spinemu.trace.PinTrace`.
+INA reads driven pins as driven and the others from the input model
+(:mod:`spinemu.chip.inputs`); the pins as they were at an earlier cycle are
+in :mod:`spinemu.chip.pinhistory`.
 """
 from __future__ import annotations
-
-import heapq
 
 from ..trace import PinTrace
 from .cog import PIN_WAIT, RUNNING, STOPPED, Cog
@@ -94,31 +93,13 @@ class Pins:
             self._request_preemption()
 
     def _build_trace(self, end: int) -> PinTrace:
-        """The pin trace up to ``end``: the pin record, with counter outputs from the counters' history."""
+        """The pin trace up to ``end``: the pin record and the counters' outputs, folded by :attr:`pin_fold`
+        (the same fold the live pin listeners read)."""
+        self.pin_fold.advance(end + 1)
         trace = PinTrace(self.clock_hz, end_cycle=end)
         trace.record(0, 0, 0)
-        state = {}                              # cog: (dira, dira & (outa | counter outputs), outa)
-        events = sorted(self.pin_events)
-        ctr = [[0, 0] for _ in range(8)]        # what each cog's counters A and B drive high
-        if self.counters_on:                    # counter marks sort before pin events of the same cycle
-            events = heapq.merge(events, ((t, -1, cog, ab, mask, None)
-                                          for t, cog, ab, mask in self.counters.trace_marks(end)))
-        for t, _, cog_id, dira, outa, running in events:
+        for t, d, o in self.pin_fold.changes:
             if t > end:
                 break
-            if running is None:                 # a counter output changed: dira, outa are (counter, mask)
-                ctr[cog_id][dira] = outa
-                if cog_id not in state:
-                    continue
-                dira, _, outa = state[cog_id]
-                state[cog_id] = (dira, outa | ctr[cog_id][0] | ctr[cog_id][1], outa)
-            elif running:
-                state[cog_id] = (dira, outa | ctr[cog_id][0] | ctr[cog_id][1], outa)
-            else:
-                state.pop(cog_id, None)
-            d = o = 0
-            for dd, oo, _ in state.values():
-                d |= dd
-                o |= dd & oo
             trace.record(t, d, o)
         return trace

@@ -24,6 +24,7 @@ from spinemu.chip import Chip
 from spinemu.chip.cog import RUNNING
 from spinemu.chip.inputs import PinStimulus
 from spinemu.chip.phase import Phase, combine, complement, floor_sum
+from spinemu.chip.pinfold import PinFold
 from spinemu.compiler import compile_source
 
 M32 = 0xFFFFFFFF
@@ -153,6 +154,8 @@ def model(sc):
         writes.setdefault(t, []).append((cog, reg, v))
     ctrs = {(1, 0): ModelCounter(), (3, 0): ModelCounter(), (3, 1): ModelCounter()}
     d2 = o2 = 0
+    dira3 = sc["dira"][3]
+    dira3_at = dict(sc.get("dira3", ()))                # cog 3's DIRA changes, if the scenario has any
     levels, without_fb, phs, trace = {}, {}, {}, {}
     for u in range(T_END + 1):
         carries = {k: c.add(u, levels) for k, c in ctrs.items()}
@@ -169,16 +172,17 @@ def model(sc):
             now.add((cog, reg & 1))
         if u in drives:
             d2, o2 = drives[u]
+        dira3 = dira3_at.get(u, dira3)
         phs[u] = ctrs[(1, 0)].acc & M32
         def out(cog, ab, shown=False):
             return ctrs[(cog, ab)].outputs(carries[(cog, ab)], (cog, ab) in now, shown)
 
         out3, shown3 = out(3, 0) | out(3, 1), out(3, 0, True) | out(3, 1, True)
         out1, shown1 = out(1, 0), out(1, 0, True)
-        d = d2 | sc["dira"][1] | sc["dira"][3]
+        d = d2 | sc["dira"][1] | dira3
 
-        def level(fb, out3=out3):
-            o = (d2 & o2) | (sc["dira"][3] & out3) | (sc["dira"][1] & (fb | out1))
+        def level(fb, out3=out3, dira3=dira3):
+            o = (d2 & o2) | (dira3 & out3) | (sc["dira"][1] & (fb | out1))
             return (o | (stim.levels(u) & ~d)) & M32
 
         fb = 0
@@ -189,13 +193,16 @@ def model(sc):
                 fb = 1 << b
         without_fb[u] = level(0)
         levels[u] = level(fb)
-        trace[u] = (d, (d2 & o2) | (sc["dira"][3] & shown3) | (sc["dira"][1] & (fb | shown1)))
+        trace[u] = (d, (d2 & o2) | (dira3 & shown3) | (sc["dira"][1] & (fb | shown1)))
     return levels, phs, trace
 
 
 
-def emulate(sc):
-    """The same scenario on a chip's counters and pin record; PHS read at the scenario's read cycles."""
+def emulate(sc, step=None):
+    """The same scenario on a chip's counters and pin record; PHS read at the scenario's read cycles.
+
+    ``step(chip, t)``, if given, is called before the actions of cycle ``t`` (everything before ``t`` is done).
+    """
     chip = Chip(IDLE_IMAGE, compat="chip", inputs=PinStimulus(sc["stimulus"]))
     chip._boot()
     cogs = chip.cogs
@@ -210,16 +217,24 @@ def emulate(sc):
                                                     chip.note_pins(cogs[2], t))))
     for t, order, cog, reg, v in sc["writes"]:
         actions.append((t, order, lambda t, cog=cog, reg=reg, v=v: chip.counters.write(cogs[cog], reg, v, t)))
+    for t, d in sc.get("dira3", ()):
+        actions.append((t, 1, lambda t, d=d: (setattr(cogs[3], "dira", d), chip.note_pins(cogs[3], t))))
     actions.sort(key=lambda a: a[:2])
     got = {}
     i = 0
+
+    def act(t, fn):
+        if step is not None:
+            step(chip, t)
+        fn(t)
+
     for rt in sc["reads"]:
         while i < len(actions) and actions[i][0] <= rt:
-            actions[i][2](actions[i][0])
+            act(actions[i][0], actions[i][2])
             i += 1
         got[rt] = chip.counters.phs(cogs[1], 0, rt)
     for t, _, fn in actions[i:]:
-        fn(t)
+        act(t, fn)
     return chip, got
 
 
@@ -247,6 +262,47 @@ def test_counters_match_the_clock_by_clock_model(seed):
             state = changes[i][1:]
             i += 1
         assert state == trace[u], u
+
+
+def states_by_cycle(changes, end):
+    """``(dir, out)`` at every cycle ``0..end`` from a list of changes."""
+    state, i, out = (0, 0), 0, []
+    for u in range(end + 1):
+        while i < len(changes) and changes[i][0] <= u:
+            state = changes[i][1:]
+            i += 1
+        out.append(state)
+    return out
+
+
+@pytest.mark.parametrize("seed", range(0, 160, 4))
+def test_pin_states_folded_while_the_scenario_runs_are_the_traces_and_the_models(seed):
+    """A second fold advanced in random steps during the scenario (as live pin listeners advance it), with
+    cog 3 switching DIRA on and off under its counters, gives the trace's changes exactly; so does one
+    advanced a cycle at a time."""
+    sc = make_scenario(seed)
+    r = random.Random(1000 + seed)
+    sc["dira3"] = sorted({r.randrange(1, T_END): r.randrange(16) for _ in range(r.randrange(1, 8))}.items())
+    _, _, trace = model(sc)
+    folds = []
+
+    def step(chip, t):
+        if not folds:
+            folds.append(PinFold(chip))
+        if r.random() < 0.5:
+            folds[0].advance(r.randrange(folds[0].folded_to, t + 1))
+
+    chip, _ = emulate(sc, step)
+    live = folds[0]
+    live.advance(T_END + 1)
+    whole = chip._build_trace(T_END).changes
+    assert [(0, 0, 0)] + live.changes == whole
+    assert live.late == 0
+    by_cycle = PinFold(chip)                            # and one cycle at a time, after the run
+    for t in range(1, T_END + 2):
+        by_cycle.advance(t)
+    assert by_cycle.changes == live.changes
+    assert states_by_cycle(whole, T_END) == [trace[u] for u in range(T_END + 1)]
 
 
 # ----------------------------------------------------------------------------- the arithmetic
