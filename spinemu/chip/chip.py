@@ -337,10 +337,12 @@ class Chip(Pins, Listeners, Scheduler):
         limit = _NEVER if max_cycles is None else max_cycles
         if not self._booted:
             self._boot()
+        self._listen_end = limit + 1 if limit < _NEVER else _NEVER
         reason = self._schedule(limit, progress)
         end = self.now if reason != "cycle limit" else limit
         if self.pin_listeners:      # pins nothing can change any more stay as they are for ever
-            self._deliver_pins(_NEVER if reason in _FINAL_REASONS else end + 1, end + 1, fold_to=end + 1)
+            self._listen_end = end + 1
+            self._deliver_pins(_NEVER if reason in _FINAL_REASONS else end + 1, end + 1)
         wall = time.perf_counter() - wall
         trace = self._build_trace(end)
         self.warnings.extend(self.counters.end_warnings(end))

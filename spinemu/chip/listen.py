@@ -14,7 +14,7 @@ order because each cog runs a slice ahead of the others.  A listener
   bytecode of the running cogs (for an engine object, its next shared
   access), or the next input change or counter edge that wakes a
   pin-waiting cog, counter edges up to it included, and never after
-  ``present``;
+  ``present`` or the cycle limit;
 * ``present``: the earliest cycle at which a new input change is still seen
   by the program (every read of the pins so far came before it): the next
   shared access of the running cogs, or, while every cog waits on pins, the
@@ -55,6 +55,7 @@ class Listeners:
         self._listen_at = 0                 # the scheduler tells the listeners when it reaches this cycle
         self._listen_from = 0               # pin_fold.changes before this index were handed over
         self._listened_to = 0
+        self._listen_end = _NEVER           # one past the run's last cycle, when known (the cycle limit)
 
     @property
     def late_pin_events(self) -> int:
@@ -114,12 +115,21 @@ class Listeners:
             step = min(2 * step, max(self.listen_interval, self.clock_hz))
         return False
 
-    def _deliver_pins(self, upto: int, present: int, fold_to=None) -> None:
-        """Fold the pins before ``upto`` (before ``fold_to`` if that is earlier) and hand the new states over."""
+    def _deliver_pins(self, upto: int, present: int) -> None:
+        """Fold the pins before ``upto`` and hand the new states over.
+
+        Nothing after the run's last cycle is folded (:attr:`_listen_end`):
+        the scheduler may know that no cog changes the pins for a while past
+        the cycle limit, but the run, its trace and the counters stop there.
+        ``upto`` is :data:`_NEVER` only in the last call, after the run.
+        """
+        end = self._listen_end
+        if upto > end and upto < _NEVER:
+            upto = end
         if upto < self._listened_to:
             upto = self._listened_to
         fold = self.pin_fold
-        fold.advance(upto if fold_to is None or fold_to > upto else fold_to)
+        fold.advance(upto if upto < end else end)
         changes = fold.changes[self._listen_from:]
         self._listen_from = len(fold.changes)
         self._listened_to = upto

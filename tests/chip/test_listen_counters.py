@@ -16,6 +16,7 @@ import os
 import pytest
 
 from spinemu.chip import Chip
+from spinemu.chip.countermarks import CounterMarks
 from spinemu.chip.inputs import PinStimulus
 from spinemu.compiler import compile_file
 from spinemu.trace import PinTrace
@@ -129,6 +130,33 @@ def test_the_programs_counters_do_drive_the_pins_the_listener_watches():
             max_cycles=cycles).trace
         for pin, at_least in expect[name].items():
             assert changes_of(trace, pin) >= at_least, (name, pin)
+
+
+def test_marks_are_made_once_each_however_often_a_listener_asks(monkeypatch):
+    """A 1 kHz NCO for a simulated second and a listener about every millisecond: each call walks only the
+    new stretch of time (the work grows with the calls, not with the calls times the run so far)."""
+    walked = []
+    original = CounterMarks._stretch
+
+    def counting(self, cur, seg, start, a, b, out):
+        walked.append((cur.cog, cur.ab, a, b))
+        return original(self, cur, seg, start, a, b, out)
+
+    plain = Chip(image("nco_blink"), compat="chip").run(max_cycles=CLOCK)
+    chip = Chip(image("nco_blink"), compat="chip")
+    calls = []
+    chip.add_pin_listener(lambda changes, upto, present: calls.append((upto, list(changes))),
+                          interval_cycles=CLOCK // 1000)
+    monkeypatch.setattr(CounterMarks, "_stretch", counting)
+    listened = chip.run(max_cycles=CLOCK)
+    assert_listener_saw_the_trace(plain, listened, calls, chip)
+    assert len(calls) >= 900 and len(plain.trace.changes) > 2900
+    segments = sum(len(unit.segs) for units in chip.counters.units for unit in units)
+    assert len(walked) <= len(calls) + 1 + segments     # per call, the output counter's one stretch
+    for counter in {(cog, ab) for cog, ab, _, _ in walked}:
+        spans = [(a, b) for cog, ab, a, b in walked if (cog, ab) == counter]
+        assert all(b0 < a1 for (_, b0), (a1, _) in zip(spans, spans[1:])), counter   # no cycle walked twice
+    assert max(b for _, _, _, b in walked) == CLOCK
 
 
 def test_a_pin_event_recorded_after_its_cycle_was_folded_is_folded_at_once_and_counted():
