@@ -40,6 +40,9 @@ from .counters import _FEEDBACK, _OUTPUTS, _PHASE_OUT, _PLL, MAX_EDGES, PLL_TRAC
 __all__ = ["CounterMarks", "trace_mask"]
 
 _BY_CYCLE = itemgetter(0)
+#: marks one piece of a long interval should bring at most, and the longest piece in cycles
+_PIECE_MARKS = 1 << 16
+_MAX_SPAN = 1 << 40
 
 
 def trace_mask(history, seg, t: int) -> int:
@@ -81,6 +84,8 @@ class CounterMarks:
 
     def __init__(self, counters):
         self.counters = counters
+        #: cycles :meth:`take` walks at once (adapted to how many marks they bring)
+        self.span = 1 << 16
         self.cursors = [_Cursor(cog, ab, unit) for cog in range(8) for ab, unit in enumerate(counters.units[cog])]
         #: marks before this cycle have been handed out
         self.start = 0
@@ -91,23 +96,35 @@ class CounterMarks:
     def take(self, upto: int) -> list:
         """The marks at cycles in ``[self.start, upto)``, in time order (then by cog and counter).
 
+        A long interval is walked in pieces (:attr:`span` cycles, halved
+        while a piece brings more than :data:`_PIECE_MARKS` marks, doubled
+        while it brings few), so that reaching the cap stops the work, as
+        it does for a listener's short intervals.
+
         Returns:
             ``[(cycle, cog, counter, mask), ...]``; ``self.start`` becomes
             ``upto`` (nothing when ``upto`` is not after it).
         """
+        out: list = []
         a = self.start
-        if upto <= a:
-            return []
-        self.start = upto
-        if self.capped:
-            return []
-        out = self._piece(a, upto)
-        if self.count + len(out) > self.limit:
-            del out[self.limit - self.count:]
-            self.capped = True
-            self.counters.chip.warnings.append(
-                f"counter output edges exceed {self.limit:,}: later counter edges are not recorded in the trace")
-        self.count += len(out)
+        while a < upto and not self.capped:
+            b = upto if upto - a <= self.span else a + self.span
+            piece = self._piece(a, b)
+            n = len(piece)
+            if n > _PIECE_MARKS and self.span > 1:
+                self.span //= 2
+            elif n < _PIECE_MARKS // 4 and self.span < _MAX_SPAN:
+                self.span *= 2
+            if self.count + n > self.limit:
+                del piece[self.limit - self.count:]
+                self.capped = True
+                self.counters.chip.warnings.append(
+                    f"counter output edges exceed {self.limit:,}: later counter edges are not recorded in the trace")
+            self.count += len(piece)
+            out += piece
+            a = b
+        if upto > self.start:
+            self.start = upto
         self.counters.edges_recorded = self.count
         return out
 

@@ -104,14 +104,25 @@ def test_a_listener_sees_the_counters_outputs_exactly_as_the_trace_has_them(name
         assert any(changes for _, changes in calls[:-1])
 
 
-def test_the_counter_edges_a_listener_is_handed_are_the_traces_up_to_the_same_cap():
+def test_the_counter_edges_a_listener_is_handed_are_the_traces_up_to_the_same_cap(monkeypatch):
     uncapped = Chip(image("duty_dac"), compat="chip").run(max_cycles=400_000)
+    made = []
+    original = CounterMarks._piece
+
+    def piece(self, a, b):
+        marks = original(self, a, b)
+        made.append(len(marks))
+        return marks
+
+    monkeypatch.setattr(CounterMarks, "_piece", piece)
     plain, listened, calls, chip = run_twice("duty_dac", None, 400_000, 5_000, limit=5_000)
     assert_listener_saw_the_trace(plain, listened, calls, chip)
     for r in (plain, listened):
         assert sum("counter output edges exceed 5,000" in w for w in r.warnings) == 1
     assert len(plain.trace.changes) < 6_000 < 100_000 < len(uncapped.trace.changes)
     assert chip.counters.edges_recorded == 5_000
+    # neither run made the marks past the cap: the plain run's one long interval is walked in pieces
+    assert sum(made) < len(uncapped.trace.changes) // 2
 
 
 def test_the_programs_counters_do_drive_the_pins_the_listener_watches():
