@@ -314,8 +314,24 @@ def cmd_run(args, out: _Out) -> int:
             rows.append(("trace", f"{args.trace} ({len(result.trace.changes)} changes)"))
         if session:
             rows.append(session.summary())
+        if result.stats.get("pll"):
+            rows.append(("PLL", _pll_summary(result.stats["pll"])))
         out.print(_summary_table(result.trace, result.end_cycle, rows))
     return 0
+
+
+def _pll_summary(plls: list) -> str:
+    """One line per PLL output of a run: pins, frequency, which counter, and whether the trace shows it."""
+    def hz(f):
+        return f"{f / 1e6:.6g} MHz" if f >= 1e6 else f"{f / 1e3:.6g} kHz" if f >= 1e3 else f"{f:.6g} Hz"
+    lines = []
+    for p in plls[:8]:
+        pins = ", ".join(f"P{x}" for x in p["pins"]) or "internal"
+        note = "" if p["traced"] or not p["pins"] else ", not in the trace"
+        lines.append(f"{pins}: {hz(p['frequency_hz'])} (cog {p['cog']} CTR{p['counter']}, {p['mode']}{note})")
+    if len(plls) > 8:
+        lines.append(f"... and {len(plls) - 8} more")
+    return "\n".join(lines)
 
 
 _PBASIC_REASONS = {"end": "END statement", "stop": "STOP statement", "time": "time limit",

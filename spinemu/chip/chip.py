@@ -140,6 +140,7 @@ class Chip(Pins, Listeners, Scheduler):
             self.lock_used[0] = True        # spinsim keeps lock 0 for itself
         self.clock_hz = self.header.clkfreq
         from .counters import Counters
+        from .pinfold import PinFold
         self.counters = Counters(self)
         self.counters_on = False        # some counter is in an output mode (else pins skip them)
         self.registers = Registers(self)
@@ -151,6 +152,7 @@ class Chip(Pins, Listeners, Scheduler):
         self._handlers = list(self.handlers)      # the real ones, while a preemption is pending
         self._preempt = False
         self.pin_events: list = []          # (cycle, seq, cog, dira, outa, running)
+        self.pin_fold = PinFold(self)       # pin events and counter outputs folded into pin states (pinfold.py)
         self._init_listeners()              # live pin listeners (listen.py)
         self.cog_events: list = []
         self.warnings: list = []
@@ -223,8 +225,6 @@ class Chip(Pins, Listeners, Scheduler):
             self._unpark(c, t)
         if c in self._pin_waiters:
             self._pin_waiters.remove(c)
-        if self.counters_on:
-            self.counters.flush(c, t)
         c.state = STOPPED
         self._cogs_changed = True
         c.pin_wait = None
@@ -337,21 +337,21 @@ class Chip(Pins, Listeners, Scheduler):
         limit = _NEVER if max_cycles is None else max_cycles
         if not self._booted:
             self._boot()
+        self._listen_end = limit + 1 if limit < _NEVER else _NEVER
         reason = self._schedule(limit, progress)
         end = self.now if reason != "cycle limit" else limit
-        if self.counters_on:
-            for c in self.cogs:
-                if c.state != STOPPED:
-                    self.counters.flush(c, end)
         if self.pin_listeners:      # pins nothing can change any more stay as they are for ever
+            self._listen_end = end + 1
             self._deliver_pins(_NEVER if reason in _FINAL_REASONS else end + 1, end + 1)
         wall = time.perf_counter() - wall
         trace = self._build_trace(end)
+        self.warnings.extend(self.counters.end_warnings(end))
         per_cog = {c.id: c.bytecodes for c in self.cogs if c.bytecodes}
         stats = {"bytecodes": sum(per_cog.values()), "bytecodes_per_cog": per_cog,
                  "wall_seconds": wall, "simulated_seconds": end / self.clock_hz if self.clock_hz else 0.0}
         stats["realtime_factor"] = stats["simulated_seconds"] / wall if wall > 0 else 0.0
         stats.update(self._ff_stats())
+        stats["pll"] = [p._asdict() for p in self.counters.pll_outputs(end)]
         return RunResult(trace, bytes(self.mem[:HUB_SIZE]), end, reason, list(self.cog_events),
                          list(self.warnings), stats)
 
