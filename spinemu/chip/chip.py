@@ -272,7 +272,9 @@ class Chip(Pins, Scheduler):
         if target.state != STOPPED:
             self.stop_cog(target, done, f"restarted by cog {c.id}")
         if self.spinsim:
-            t_first = done + _SPINSIM_START_CYCLES
+            # the new cog's first slot is the COGINIT's last cycle, one step later
+            # when spinsim has already stepped the target in that cycle (a lower id, or itself)
+            t_first = done + _SPINSIM_START_CYCLES + (4 if target.id <= c.id else 0)
         else:
             t_first = done + COG_LOAD_CYCLES
         if (code & 0xFFFC) == INTERPRETER_ENTRY & 0xFFFC:

@@ -577,7 +577,7 @@ class PasmEngine:
         c.started_at = t_first
         c.t = c.key = t_first + 4
         label = chip.code_label(code)
-        chip.cog_events.append((t_first, c.id, "start", f"PASM at ${code:04X}" + (f" ({label})" if label else "")
+        chip.cog_events.append((t_first, c.id, "start", f"PASM at ${code:04X}" + (f" {label}" if label else "")
                                 + (f" (started by cog {by.id})" if by else "")))
         if keep != (0, 0):
             chip.note_pins(c, t_first)

@@ -102,7 +102,7 @@ class CompiledProgram:
         return to_eeprom(self.binary)
 
     def dat_labels(self) -> dict:
-        """Hub address -> ``"label (file.spin)"`` for every DAT label of every object.
+        """Hub address -> ``"'label' in file.spin"`` for every DAT label of every object.
 
         The chip names a PASM cog's start address with it (``Chip(labels=...)``).
         """
@@ -113,7 +113,7 @@ class CompiledProgram:
             todo.extend(lay.children)
             name = os.path.basename(lay.path)
             for label, (offset, _size, _cog) in lay.dat.items():
-                out.setdefault((lay.pbase + offset) & 0xFFFF, f"{label} ({name})")
+                out.setdefault((lay.pbase + offset) & 0xFFFF, f"'{label}' in {name}")
         return out
 
     def listing(self, addresses: bool = True) -> str:
