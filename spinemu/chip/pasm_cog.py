@@ -820,10 +820,10 @@ class PasmEngine:
             got = chip.locknew()
             result = 7 if got == M else got
             carry, zero = got == M, result == 0
-        elif op == 5:                                   # LOCKRET
+        elif op == 5:                                   # LOCKRET: C = no lock was free
             result = d & 7
+            carry, zero = all(chip.lock_used), result == 0
             chip.lockret(result)
-            carry, zero = False, result == 0
         else:                                           # LOCKSET, LOCKCLR
             result = d & 7
             carry, zero = chip.lockset(result, op == 6), result == 0
