@@ -339,8 +339,8 @@ class Chip(Pins, Scheduler):
         return 0xFFFFFFFF
 
     def lockret(self, i: int) -> None:
-        if not (self.spinsim and i == 0):
-            self.lock_used[i] = False
+        # spinsim too frees lock 0 (checked on spinsim 0.99: LOCKRET(0), then LOCKNEW gives 0)
+        self.lock_used[i] = False
 
     def lockset(self, i: int, value: bool) -> bool:
         was = self.locks[i]

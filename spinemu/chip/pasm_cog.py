@@ -487,21 +487,34 @@ class HandlerBuilder:
         nxt = "(pc + 1) & 511"
         if kind == "waitcnt":
             # ends on the first cycle of the cog's 4-cycle grid at or after the target (3 back still count)
-            body += ["e = t + (((d - t + 3) & M) & ~3)", "x = d + s", "r = x & M"]
+            body += ["e = t + (((d - t + 3) & M) & ~3)"]
+            if not word & isa.I_BIT and word & 0x1FF == _CNT:
+                body.append("s = e & M")                # CNT as S is read when the wait ends
+            body += ["x = d + s", "r = x & M"]
             commit: list = []
             if word & isa.R_BIT:
                 self._dest_write(word, "r", "e + 4", f"((e + 4) << 9) | {nxt}", body, commit)
             return body + self._flags(word, "x >> 32", "r == 0") + commit + [f"return ((e + 4) << 9) | {nxt}"]
-        if kind == "waitvid":
+        wr = bool(word & isa.R_BIT)
+        if kind == "waitvid":                   # wr writes 0 (as spinsim)
+            commit = []
+            if wr:
+                self._dest_write(word, "0", "t + 4", f"((t + 4) << 9) | {nxt}", body, commit)
             if self.spinsim:                    # spinsim has no video generator: 4 cycles
-                return [f"s = {s_expr}"] if checks else []
-            return body + ["return ENG.waitvid(R, pc, t)"]
+                return body + commit
+            return body + commit + ["return ENG.waitvid(R, pc, t)"]
+        # WAITPEQ/WAITPNE: Z as if D - (INA & S) were the result (0 for a met WAITPEQ), C = 0;
+        # wr writes that result
         equal = kind == "waitpeq"
         body = ["if t >= U[0]: raise Y(t)"] + body
         body += self._flags(word, "0", "1" if equal else "0")
         test = "==" if equal else "!="
-        body += [f"if (INA(t) & s) {test} d: return ((t + 4) << 9) | {nxt}",
-                 f"ENG.wait_pins(R, pc, t, s, d, {equal})"]
+        body.append("x = INA(t) & s")
+        commit = []
+        if wr:
+            self._dest_write(word, "(d - x) & M", "t + 4", f"((t + 4) << 9) | {nxt}", [], commit)
+        body += [f"if x {test} d:"] + ["    " + c for c in commit] + [f"    return ((t + 4) << 9) | {nxt}"]
+        body.append(f"ENG.wait_pins(R, pc, t, s, d, {equal}, {(word >> 9) & 0x1FF if wr else -1})")
         return body
 
 
@@ -538,6 +551,8 @@ class PasmEngine:
         #: cog id -> callback(PasmStep), for cogs whose instructions are traced
         self.tracers: dict = {}
         self.instructions = 0
+        #: cog id -> register a waiting WAITPEQ/WAITPNE with ``wr`` writes when it ends
+        self.wait_results: dict = {}
 
     def __repr__(self) -> str:  # the scheduler's engine name in debugging output
         return "<PasmEngine>"
@@ -662,8 +677,7 @@ class PasmEngine:
             done = self._step(c, until)
             if not done:
                 return                      # its shared access comes after another cog's
-            fam, kind = FAMILIES[w >> 26]
-            writes = executed and w & isa.R_BIT and not (fam == "wait" and kind != "waitcnt")
+            writes = executed and w & isa.R_BIT
             F = R[FLAGS]
             report(PasmStep(t, c.id, pc, w, executed, F & 1, F >> 1, R[(w >> 9) & 0x1FF] if writes else None))
             if done is _LEFT:
@@ -712,10 +726,15 @@ class PasmEngine:
         c.key = c.t
 
     # ------------------------------------------------------------------ what handlers call
-    def wait_pins(self, R, pc: int, t: int, mask: int, state: int, equal: bool) -> None:
-        """WAITPEQ/WAITPNE whose condition does not hold at ``t``: wait until the pins change."""
+    def wait_pins(self, R, pc: int, t: int, mask: int, state: int, equal: bool, dest: int = -1) -> None:
+        """WAITPEQ/WAITPNE whose condition does not hold at ``t``: wait until the pins change.
+
+        ``dest`` (with ``wr``): the register that gets ``D - (INA & S)`` when the wait ends.
+        """
         chip = self.chip
         c = R[COG]
+        if dest >= 0:
+            self.wait_results[c.id] = dest
         c.pin_wait = (mask, state, equal, None)
         c.state = PIN_WAIT
         chip._cogs_changed = True
@@ -728,8 +747,7 @@ class PasmEngine:
         c.key = 0
         raise _Leave(None)
 
-    @staticmethod
-    def wake_time(c, t: int, writer) -> int:
+    def wake_time(self, c, t: int, writer) -> int:
         """The first cycle of the instruction after a WAITPEQ/WAITPNE that the pins at ``t`` satisfy.
 
         ``t`` is when the pins changed: a cog's write (``writer``) shows at its
@@ -743,6 +761,13 @@ class PasmEngine:
         poll = base + ((grid - base) & 3)
         if writer is not None and poll == base and writer.id > c.id:
             poll += 4
+        dest = self.wait_results.pop(c.id, None)
+        if dest is not None:
+            mask, state, _equal, _after = c.pin_wait
+            value = (state - (self.chip.ina(t) & mask)) & M
+            c.ram[dest] = value
+            if dest >= 0x1F4:
+                self.chip.registers.write(c, dest, value, poll + 4)
         return poll + 4
 
     def waitvid(self, R, pc: int, t: int) -> int:

@@ -79,10 +79,10 @@ class Pins:
             mask, state, equal, after = c.pin_wait
             if ((self.ina(t) & mask) == state) == equal:
                 self._pin_waiters.remove(c)
+                c.t = t + after if after is not None else c.engine.wake_time(c, t, writer)
                 c.pin_wait = None
                 c.state = RUNNING
                 self._cogs_changed = True
-                c.t = t + after if after is not None else c.engine.wake_time(c, t, writer)
                 woke = True
         if woke:
             self._request_preemption()

@@ -19,7 +19,7 @@ import pytest
 
 from spinemu.chip import Chip
 
-from chip_helpers import ROOT, read_bytes
+from chip_helpers import ROOT, pasm_mismatches, read_bytes
 
 PROBES = os.path.join(ROOT, "tests", "data", "chip", "pasm")
 NAMES = sorted(os.path.basename(p)[:-len(".expected.json")]
@@ -38,25 +38,11 @@ def run_probe(name):
     return expected, steps, result
 
 
-def mismatches(recorded, ours):
-    """Lines describing where our instructions differ from the recorded ones (``None`` fields: not shown by spinsim)."""
-    bad = []
-    for k, want in enumerate(recorded):
-        if k >= len(ours):
-            bad.append(f"step {k}: spinsim ran {want}, spinemu stopped")
-            break
-        s = ours[k]
-        got = [s.cycle, s.pc, s.word, s.executed, s.result, s.z, s.c]
-        if any(w is not None and w != g for w, g in zip(want, got)):
-            bad.append(f"step {k}: spinsim {want}, spinemu {got} ({s.text().strip()})")
-    return bad
-
-
 @pytest.mark.parametrize("name", NAMES)
 def test_probe_runs_every_pasm_instruction_as_spinsim(name):
     expected, steps, _ = run_probe(name)
     for cog, recorded in expected["steps"].items():
-        bad = mismatches(recorded, steps[int(cog)])
+        bad = pasm_mismatches(recorded, steps[int(cog)])
         assert not bad, f"cog {cog}: {len(bad)} differences, first: " + "; ".join(bad[:3])
 
 
