@@ -315,6 +315,7 @@ class HandlerBuilder:
         lines.append("        return None")
         lines.append("    return h")
         src = "\n".join(lines) + "\n"
+        src = re.sub(r"\bM\b", "0xFFFFFFFF", re.sub(r"\bSB\b", "0x80000000", src))   # constants, not globals
         ns: dict = {}
         exec(compile(src, f"<pasm {fam} {detail} ${word >> 18:04X}>", "exec"), self.env, ns)
         make = ns["make"]

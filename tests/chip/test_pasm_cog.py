@@ -283,3 +283,17 @@ def test_the_python_engine_runs_pasm_cogs_as_the_bytecode_engine(tmp_path):
     a = run_translated(str(src), max_cycles=100_000)
     b = Chip(compile_source(src.read_text()).binary).run(max_cycles=100_000)
     assert a.trace.changes == b.trace.changes and len(a.trace.changes) == 5
+
+
+def test_a_pasm_hub_write_wakes_a_parked_spin_loop_at_the_right_cycle():
+    src = ("VAR\n  long flag\nPUB main\n  cognew(@entry, @flag)\n  repeat until flag\n  dira[0] := 1\n"
+           "  repeat until flag == 2\n  dira[1] := 1\nDAT\n        org 0\nentry   mov t, cnt\n"
+           "        add t, delay\n        waitcnt t, delay\n        wrlong one, par\n        waitcnt t, #0\n"
+           "        wrlong two, par\n        cogid t\n        cogstop t\none long 1\ntwo long 2\n"
+           "delay long 200_000\nt long 0\n")
+    image = compile_source(src).binary
+    fast = Chip(image).run()
+    slow = Chip(image, fast_forward=False, compile_blocks=False).run()
+    assert fast.stats["bytecodes_skipped"] > 0              # the Spin loops were parked
+    assert fast.trace.changes == slow.trace.changes and fast.end_cycle == slow.end_cycle
+    assert len(fast.trace.changes) == 4

@@ -53,3 +53,13 @@ def test_probe_pins_end_and_hub_as_spinsim(name):
     assert result.end_cycle == expected["end_cycle"]
     assert [list(c) for c in result.trace.changes] == expected["pins"]
     assert hashlib.sha256(result.hub).hexdigest() == expected["hub_sha256"]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_probe_results_do_not_depend_on_fast_forward_or_compiled_blocks(name):
+    image = read_bytes(os.path.join(PROBES, name + ".binary"))
+    runs = [Chip(image, fast_forward=ff, compile_blocks=cb).run(max_cycles=5_000_000)
+            for ff, cb in ((True, True), (False, False))]
+    a, b = runs
+    assert (a.trace.changes, a.hub, a.end_cycle, a.stats["pasm_instructions_per_cog"]) == \
+        (b.trace.changes, b.hub, b.end_cycle, b.stats["pasm_instructions_per_cog"])
