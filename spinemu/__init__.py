@@ -96,17 +96,19 @@ def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] =
     from .chip import Chip
     from .image import ImageHeader, load_image
 
+    labels = None
     if isinstance(target, (bytes, bytearray)):
         image = load_image(bytes(target))
     elif str(target).lower().endswith(".spin"):
-        image = compile_spin(target, include_dirs).binary
+        prog = compile_spin(target, include_dirs)
+        image, labels = prog.binary, prog.dat_labels()
     else:
         with open(target, "rb") as f:
             image = load_image(f.read(), str(target))
     limit = cycles
     if seconds is not None:
         limit = int(round(seconds * (ImageHeader.parse(image).clkfreq or 80_000_000)))
-    return Chip(image, compat=compat, inputs=inputs).run(max_cycles=limit)
+    return Chip(image, compat=compat, inputs=inputs, labels=labels).run(max_cycles=limit)
 
 
 def run_bs2(path, *, seconds: float = 10.0, timing: str = "exact", **options):

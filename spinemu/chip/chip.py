@@ -192,6 +192,7 @@ class Chip(Pins, Scheduler):
         self.now = 0
         #: the run's cycle limit (engines that run ahead never pass it)
         self.run_limit = _NEVER
+        self._last_stop = 0
         self.pasm = None            # the PASM engine (pasm_cog.py), made when a PASM cog starts
         self._clock_mode = self.header.clkmode
 
@@ -246,6 +247,7 @@ class Chip(Pins, Scheduler):
         c.pin_wait = None
         c.t = _NEVER
         self.now = max(self.now, t)
+        self._last_stop = max(self._last_stop, t)
         self.cog_events.append((t, c.id, "stop", why))
         self._seq += 1
         self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, False))
@@ -395,6 +397,8 @@ class Chip(Pins, Scheduler):
             self._boot()
         reason = self._schedule(limit, progress)
         end = self.now if reason != "cycle limit" else limit
+        if reason == "all cogs stopped":        # an engine may stop a cog ahead of another's last events
+            end = max(end, self._last_stop)
         if self.counters_on:
             for c in self.cogs:
                 if c.state != STOPPED:
