@@ -17,7 +17,8 @@ import pytest
 
 from spinemu import pasm
 from spinemu.chip import Chip
-from spinemu.chip.pasm_cog import ALU, COG, FAMILIES, FLAGS, HUB_PHASE, RAM_SLOTS, PasmEngine
+from spinemu.chip.pasm_cog import PasmEngine
+from spinemu.chip.pasm_ops import ALU, COG, FAMILIES, FLAGS, HUB_PHASE, RAM_SLOTS
 from spinemu.cli import main
 from spinemu.compiler import compile_source
 

@@ -3,8 +3,8 @@
 Each ``tests/data/chip/pasm/NAME.spin`` (spinemu's own probes: the pipeline,
 jumps, hub windows in every cog, WAITCNT, pins and WAITPEQ across cogs,
 COGINIT/COGSTOP, locks, special registers, Spin and PASM together, a PASM
-cog starting a Spin cog, odd corners) comes with OpenSpin's image and ``NAME.expected.json``, recorded by
-tests/chip/tools/make_pasm_probes.py: every instruction of every PASM cog
+cog starting a Spin cog, odd corners) comes with OpenSpin's image and
+``NAME.expected.json``, recorded by tests/chip/tools/make_pasm_probes.py: every instruction of every PASM cog
 (first cycle, address, long, condition, value written, flags), the pin
 changes, the cycle the last cog stopped and the hub RAM's SHA-256 then.
 """

@@ -48,7 +48,7 @@ def test_random_program_runs_as_on_spinsim(program):
 
 
 def test_the_sample_covers_every_instruction_family():
-    from spinemu.chip.pasm_cog import FAMILIES
+    from spinemu.chip.pasm_ops import FAMILIES
     seen = set()
     for program in PROGRAMS:
         for step in program["expected"]["steps"]:
