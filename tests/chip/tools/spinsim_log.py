@@ -138,12 +138,16 @@ def pin_trace(cogs: dict) -> list:
 
     An OUTA/DIRA write shows at its instruction's cycle + 4; a cog stopped by
     a COGSTOP (its target read from the value last written to the COGSTOP's
-    destination register) floats its pins at the COGSTOP's cycle + 4.
+    destination register) floats its pins at the COGSTOP's cycle + 4; a
+    stopped cog started again drives its old DIRA/OUTA again from its first
+    slot (spinsim does not clear them).
     """
     events = []
     for k, lines in cogs.items():
         regs: dict = {}
         for cyc, addr, ins, flag, text in lines:
+            if flag == "I" and addr == 0 and ins == "00000000":
+                events.append((cyc, 2, k, "start", 0))
             if flag != " ":
                 continue
             word = int(ins, 16)
@@ -157,10 +161,15 @@ def pin_trace(cogs: dict) -> list:
                 events.append((cyc + 4, 0, regs[dest] & 7, None, 0))
     events.sort()
     drive: dict = {}
+    stopped: dict = {}
     out = [(0, 0, 0)]
     for t, _, k, dest, value in events:
         if dest is None:
-            drive.pop(k, None)
+            if k in drive:
+                stopped[k] = drive.pop(k)
+        elif dest == "start":
+            if k in stopped:
+                drive[k] = stopped.pop(k)
         else:
             d = drive.setdefault(k, [0, 0])
             d[0 if dest == 0x1F6 else 1] = value
