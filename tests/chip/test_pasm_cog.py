@@ -298,3 +298,17 @@ def test_a_pasm_hub_write_wakes_a_parked_spin_loop_at_the_right_cycle():
     assert fast.stats["bytecodes_skipped"] > 0              # the Spin loops were parked
     assert fast.trace.changes == slow.trace.changes and fast.end_cycle == slow.end_cycle
     assert len(fast.trace.changes) == 4
+
+
+def test_waitpeq_on_an_input_stimulus_ends_at_the_first_poll_after_the_edge():
+    from spinemu.chip.inputs import PinStimulus
+    image = pasm_program("        waitpeq bit, bit\n        mov     x, cnt\n        cogid   x\n        cogstop x\n"
+                         "bit long 1 << 7\nx long 0")
+    for edge in (1_000_001, 1_000_002, 1_000_003, 1_000_004):
+        chip = Chip(image, inputs=PinStimulus([(edge, 1 << 7, 1 << 7)]))
+        steps = []
+        chip.trace_cog(1, steps.append)
+        chip.run()
+        wait, after = steps[0], steps[1]
+        poll = edge + ((wait.cycle - edge) & 3)         # polls fall on the cog's 4-cycle grid
+        assert after.cycle == poll + 4 and after.result == poll + 4
