@@ -277,7 +277,7 @@ def cmd_run(args, out: _Out) -> int:
 
         chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map,
                     labels=prog.dat_labels() if prog is not None else None)
-        with _pasm_trace_sink(args, out) as sink:
+        with _pasm_trace_sink(args, out, chip, prog) as sink:
             for cog_id in args.trace_cog or ():
                 chip.trace_cog(cog_id, sink)
             progress, update = _progress_callback(out, limit, clock, not args.no_progress)
@@ -319,12 +319,27 @@ def _pasm_rows(result) -> list:
 
 
 class _pasm_trace_sink:
-    """``--trace-cog``: a callback writing one line per PASM instruction to the chosen file (or stdout)."""
+    """``--trace-cog``: a callback writing one line per PASM instruction to the chosen file (or stdout).
 
-    def __init__(self, args, out: "_Out"):
+    With the program's source, the DAT labels of the code the cog was loaded
+    from name its registers and jump targets (a label counts when its cog
+    address matches its distance from the start of the loaded code).
+    """
+
+    def __init__(self, args, out: "_Out", chip, prog):
         self.path = getattr(args, "trace_cog_file", None) if getattr(args, "trace_cog", None) else None
         self.stream = out.stdout
         self.file = None
+        self.chip = chip
+        self.dat = prog.dat_symbols() if prog is not None else []
+        self.symbols: dict = {}         # code address -> {cog address: label}
+
+    def _symbols(self, code: int) -> dict:
+        table = self.symbols.get(code)
+        if table is None:
+            table = self.symbols[code] = {cog: name for hub, cog, name in self.dat
+                                          if hub >= code and (hub - code) == 4 * cog}
+        return table
 
     def __enter__(self):
         if self.path and self.path != "-":
@@ -332,8 +347,8 @@ class _pasm_trace_sink:
                 self.file = self.stream = open(self.path, "w", encoding="utf-8")
             except OSError as e:
                 raise UsageError(f"cannot write '{self.path}': {e.strerror}") from None
-        write = self.stream.write
-        return lambda step: write(step.text() + "\n")
+        write, cogs = self.stream.write, self.chip.cogs
+        return lambda step: write(step.text(self._symbols(cogs[step.cog].code_addr)) + "\n")
 
     def __exit__(self, *exc):
         if self.file is not None:

@@ -80,15 +80,23 @@ class PasmStep(NamedTuple):
     c: int
     result: Optional[int]
 
-    def text(self) -> str:
-        """One log line: cycle, cog, address, disassembly, flags, written value."""
-        dis = " ".join(isa.disassemble(self.word).split())
+    def text(self, symbols: Optional[dict] = None) -> str:
+        """One log line: cycle, cog, address, disassembly, flags, written value.
+
+        ``symbols`` (cog address -> name) names registers, jump targets and
+        the instruction's own address, as in ``spinemu disasm``.
+        """
+        # `jmp #0` and `ret` are one long: a label at $000 says it is a jump
+        dis = " ".join(isa.disassemble(self.word, None, symbols, ret_as_jmp=bool(symbols) and 0 in symbols).split())
+        where = f"${self.pc:03X}"
+        if symbols:
+            where = f"{where} {symbols.get(self.pc, '')}".ljust(17)
         tail = f"Z={self.z} C={self.c}"
         if not self.executed:
             tail = "(condition false) " + tail
         elif self.result is not None:
             tail += f" -> ${self.result:08X}"
-        return f"{self.cycle:>12} cog {self.cog} ${self.pc:03X}  {dis:<36} {tail}"
+        return f"{self.cycle:>12} cog {self.cog} {where}  {dis:<36} {tail}"
 
 
 _NEXT = [(k + 1) & 511 for k in range(512)]

@@ -270,7 +270,8 @@ def test_run_command_traces_a_cog_and_lists_pasm_cogs(tmp_path):
     assert main(["run", str(src), "--cycles", "3000", "--trace-cog", "1", "--trace-cog-file", str(log),
                  "--no-progress"], stdout=out) == 0
     lines = log.read_text().splitlines()
-    assert lines and "cog 1 $000  add $002, #$001" in lines[0]
+    assert lines and "cog 1 $000 entry" in lines[0] and "add x, #$001" in lines[0]   # DAT labels name it
+    assert "jmp #entry" in lines[1]
     assert "'entry' in p.spin" in out.getvalue() and "instructions" in out.getvalue()
 
 
