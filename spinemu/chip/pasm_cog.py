@@ -41,7 +41,7 @@ whose write reaches the same pins or hub long in the same cycle as another
 cog's read goes first when its id is lower (as spinsim steps its cogs).
 
 **Hot paths:** :meth:`PasmEngine.run` (one dict lookup of the instruction
-long, one call, no flag checks) and the generated handlers.
+long, one call, no flag checks) and the generated handlers (:mod:`.pasm_ops`).
 :meth:`PasmEngine.run_traced` is its instrumented twin (``--trace-cog``).
 """
 from __future__ import annotations
@@ -203,16 +203,20 @@ class PasmEngine:
                     pc1 = NEXT[pc]
                     w1 = R[pc1]
                     x = H[w](R, pc, t)
-                    n += 1
                     if x is None:
                         pc = pc1
                         w = w1
                         t += 4
-                    else:
+                    elif x >= 0:
                         t = x >> 9
                         pc = x & 511
                         w = w1 if pc == pc1 else R[pc]
-                key = t
+                    else:                   # its shared access must wait for its turn
+                        key = -1 - x
+                        break
+                    n += 1
+                else:
+                    key = t
             except Yield as e:
                 key = e.key
             except Fetched as e:
@@ -268,6 +272,8 @@ class PasmEngine:
         self.until[0] = until
         try:
             x = self.handlers[w](R, pc, t)
+            if x is not None and x < 0:
+                raise Yield(-1 - x)
         except Yield as e:
             c.key = e.key
             return False

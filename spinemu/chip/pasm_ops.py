@@ -153,7 +153,7 @@ assert not _MISSING_ALU, f"ALU table lacks {_MISSING_ALU}"
 
 
 class Yield(Exception):
-    """Raised by a handler before a shared access at or past ``until``: the instruction did not run."""
+    """Raised by a hub operation before its shared access at or past ``until``: it did not run."""
 
     def __init__(self, key: int):
         self.key = key
@@ -200,11 +200,19 @@ class HandlerBuilder:
     """Writes the Python handler of one instruction long.
 
     A handler is called as ``h(R, pc, t)`` (cog RAM, the instruction's cog
-    address, its first cycle) and returns ``None`` for "the next instruction
-    follows 4 cycles later", else the packed next state ``(t_next << 9) |
-    pc_next``.  Handlers are made per *shape* (opcode, effects, condition,
-    which special registers it touches) from source text compiled once, and
-    per long by binding the D and S fields.
+    address, its first cycle) and returns
+
+    * ``None``: the next instruction follows 4 cycles later;
+    * the packed next state ``(t_next << 9) | pc_next``;
+    * ``-1 - key`` when its access to shared state at cycle ``key`` comes at
+      or after the scheduler's ``until`` (``U[0]``): it did *not* run.
+
+    Rare outcomes are exceptions: :class:`Leave` (it ran, and the scheduler
+    must look again), :class:`Fetched` (a jump wrote its own target),
+    :class:`Yield` (a hub operation's turn has not come).  Handlers are made
+    per *shape* (opcode, effects, condition, which special registers it
+    touches) from source text compiled once, and per long by binding the D
+    and S fields.
 
     Args:
         engine: the :class:`PasmEngine` whose chip the handlers act on.
@@ -216,7 +224,7 @@ class HandlerBuilder:
         self.spinsim = chip.spinsim
         self.factories: dict = {}
         self.env = {
-            "M": M, "SB": 0x80000000, "REV": _rev32, "U": engine.until, "Y": Yield, "LEAVE": Leave,
+            "M": M, "SB": 0x80000000, "REV": _rev32, "U": engine.until, "LEAVE": Leave,
             "FETCHED": Fetched, "CH": chip, "WREG": chip.registers.write, "INA": chip.ina,
             "PHS": chip.counters.phs, "PIN_MODES": PIN_MODES, "MEM": chip.mem, "W": chip.mem_words,
             "L": chip.mem_longs, "WATCH": chip.watch, "BUSY": BUSY, "ENG": engine,
@@ -276,13 +284,13 @@ class HandlerBuilder:
         if src == _CNT:
             return "t & M"
         if src == _INA:
-            checks.append("if t >= U[0]: raise Y(t)")
+            checks.append("if t >= U[0]: return -1 - t")
             return "INA(t)"
         if src == _INB:
             return "R[S]" if self.spinsim else "0"            # no port B on the P8X32A
         if src in (_PHSA, _PHSB):
             ab = src - _PHSA
-            checks.append(f"if (R[{0x1F8 + ab}] >> 26) & 31 in PIN_MODES and t >= U[0]: raise Y(t)")
+            checks.append(f"if (R[{0x1F8 + ab}] >> 26) & 31 in PIN_MODES and t >= U[0]: return -1 - t")
             return f"PHS(R[515], {ab}, t)"
         return "R[S]"                                          # mirrored registers
 
@@ -298,14 +306,14 @@ class HandlerBuilder:
             commit.append(f"R[D] = {value}")
             return
         if dest in (_OUTA, _DIRA):
-            checks.append(f"if {value} != R[D] and t >= U[0]: raise Y(t)")
+            checks.append(f"if {value} != R[D] and t >= U[0]: return -1 - t")
             commit += [f"if {value} != R[D]:",
                        f"    R[D] = {value}",
                        f"    WREG(R[515], D, {value}, {when})",
                        f"    if CH._preempt: CH._end_preemption(); raise LEAVE({after})"]
             return
         if 0x1F8 <= dest <= 0x1FD:                 # counters: their pins and PHS
-            checks.append("if t >= U[0]: raise Y(t)")
+            checks.append("if t >= U[0]: return -1 - t")
             commit += [f"R[D] = {value}", f"WREG(R[515], D, {value}, {when})",
                        f"if CH._preempt: CH._end_preemption(); raise LEAVE({after})"]
             return
@@ -402,7 +410,7 @@ class HandlerBuilder:
         checks: list = []
         s_expr = self._source(word, checks)
         body = checks + ["key = t + 8", "key += (R[514] - key) & 15",
-                         "if key >= U[0]: raise Y(key)", f"a = {s_expr}"]
+                         "if key >= U[0]: return -1 - key", f"a = {s_expr}"]
         nxt = "(key << 9) | ((pc + 1) & 511)"
         if read:
             body.append(("r = MEM[a & 0xFFFF]", "r = W[(a & 0xFFFE) >> 1]", "r = L[(a & 0xFFFC) >> 2]")[size])
@@ -448,7 +456,7 @@ class HandlerBuilder:
         # WAITPEQ/WAITPNE: Z as if D - (INA & S) were the result (0 for a met WAITPEQ), C = 0;
         # wr writes that result
         equal = kind == "waitpeq"
-        body = ["if t >= U[0]: raise Y(t)"] + body
+        body = ["if t >= U[0]: return -1 - t"] + body
         body += self._flags(word, "0", "1" if equal else "0")
         test = "==" if equal else "!="
         body.append("x = INA(t) & s")

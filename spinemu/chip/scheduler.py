@@ -83,7 +83,12 @@ class Scheduler:
             ck = ck2 = 0
             for k in running:
                 if generic:
-                    key = self._key(k)
+                    e = k.engine
+                    if e.__class__ is not str:
+                        key = e.key(k)
+                    else:
+                        key = k.t + 12
+                        key += ((k.hub_phase - key) & 15) + acc[mem[k.pc]]
                 else:
                     key = k.t + 12
                     key += ((k.hub_phase - key) & 15) + acc[mem[k.pc]]
