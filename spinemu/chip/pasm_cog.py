@@ -158,7 +158,6 @@ class PasmEngine:
         c.engine = self
         c.state = RUNNING
         c.code_addr = code
-        c.instructions = 0
         chip._cogs_changed = True
         c.started_at = t_first
         c.t = c.key = t_first + 4
