@@ -391,8 +391,8 @@ class PasmEngine:
         d = R[dest]
         zero = carry = None
         leave = False
-        if op == 0:                                     # CLKSET
-            result = 0
+        if op == 0:                                     # CLKSET: D written back unchanged with wr
+            result = d
             mode = d & 0xFF
             if mode & 0x80:
                 c.t = key

@@ -18,6 +18,8 @@ entry   mov     x, #0 wz
         mov     y, #0
         rdbyte  x, #4
         clkset  x               ' the mode the program runs in: nothing changes
+        clkset  x wr            ' wr writes D back
+        hubop   x, y wr         ' y = 0: CLKSET through a register
         waitvid x, #0
         waitvid x, #0 wz, wc
         mov     f, #0
