@@ -100,17 +100,19 @@ def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] =
     from .chip import Chip
     from .image import ImageHeader, load_image
 
+    labels = None
     if isinstance(target, (bytes, bytearray)):
         image = load_image(bytes(target))
     elif str(target).lower().endswith(".spin"):
-        image = compile_spin(target, include_dirs).binary
+        prog = compile_spin(target, include_dirs)
+        image, labels = prog.binary, prog.dat_labels()
     else:
         with open(target, "rb") as f:
             image = load_image(f.read(), str(target))
     limit = cycles
     if seconds is not None:
         limit = int(round(seconds * (ImageHeader.parse(image).clkfreq or 80_000_000)))
-    chip = Chip(image, compat=compat, inputs=inputs)
+    chip = Chip(image, compat=compat, inputs=inputs, labels=labels)
     for part in parts:
         part.attach(chip)
     return chip.run(max_cycles=limit)

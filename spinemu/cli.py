@@ -277,6 +277,8 @@ def cmd_run(args, out: _Out) -> int:
         if args.engine == "python":
             if kind != "spin":
                 raise UsageError("--engine python needs a .spin source (it translates the source)")
+            if args.trace_cog:
+                raise UsageError("--trace-cog works with the bytecode engine (leave out --engine python)")
             from .translate import run_translated
 
             result = run_translated(args.target, include_dirs=list(args.include or ()), max_cycles=limit,
@@ -284,16 +286,20 @@ def cmd_run(args, out: _Out) -> int:
         else:
             from .chip import Chip
 
-            chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map)
+            chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map,
+                        labels=prog.dat_labels() if prog is not None else None)
             for part in parts:
                 part.attach(chip)
-            progress, update = _progress_callback(out, limit, clock, not args.no_progress and not
-                                                  (session and session.shows))
-            if progress is not None:
-                with progress:
-                    result = chip.run(max_cycles=limit, progress=update)
-            else:
-                result = chip.run(max_cycles=limit)
+            with _pasm_trace_sink(args, out, chip, prog) as sink:
+                for cog_id in args.trace_cog or ():
+                    chip.trace_cog(cog_id, sink)
+                progress, update = _progress_callback(out, limit, clock, not args.no_progress and not
+                                                      (session and session.shows))
+                if progress is not None:
+                    with progress:
+                        result = chip.run(max_cycles=limit, progress=update)
+                else:
+                    result = chip.run(max_cycles=limit)
     wall = time.perf_counter() - t0
     _write_trace(args, result.trace)
     if args.dump_hub:
@@ -310,6 +316,7 @@ def cmd_run(args, out: _Out) -> int:
         rows = [("ended", reason),
                 ("cogs", f"{started} started, {stopped} stopped"),
                 ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
+        rows += _pasm_rows(result)
         if args.trace:
             rows.append(("trace", f"{args.trace} ({len(result.trace.changes)} changes)"))
         if session:
@@ -332,6 +339,56 @@ def _pll_summary(plls: list) -> str:
     if len(plls) > 8:
         lines.append(f"... and {len(plls) - 8} more")
     return "\n".join(lines)
+
+
+def _pasm_rows(result) -> list:
+    """Summary rows for the PASM cogs a run started: where, and how many instructions they ran."""
+    counts = result.stats.get("pasm_instructions_per_cog", {})
+    rows = []
+    for cycle, cog_id, kind, detail in result.cog_events:
+        if kind == "start" and detail.startswith("PASM"):
+            rows.append((f"cog {cog_id}", f"{detail} at cycle {cycle:,}"))
+    if counts:
+        rows.append(("PASM", ", ".join(f"cog {k}: {n:,} instructions" for k, n in sorted(counts.items()))))
+    return rows
+
+
+class _pasm_trace_sink:
+    """``--trace-cog``: a callback writing one line per PASM instruction to the chosen file (or stdout).
+
+    With the program's source, the DAT labels of the code the cog was loaded
+    from name its registers and jump targets (a label counts when its cog
+    address matches its distance from the start of the loaded code).
+    """
+
+    def __init__(self, args, out: "_Out", chip, prog):
+        self.path = getattr(args, "trace_cog_file", None) if getattr(args, "trace_cog", None) else None
+        self.stream = out.stdout
+        self.file = None
+        self.chip = chip
+        self.dat = prog.dat_symbols() if prog is not None else []
+        self.symbols: dict = {}         # code address -> {cog address: label}
+
+    def _symbols(self, code: int) -> dict:
+        table = self.symbols.get(code)
+        if table is None:
+            table = self.symbols[code] = {cog: name for hub, cog, name in self.dat
+                                          if hub >= code and (hub - code) == 4 * cog}
+        return table
+
+    def __enter__(self):
+        if self.path and self.path != "-":
+            try:
+                self.file = self.stream = open(self.path, "w", encoding="utf-8")
+            except OSError as e:
+                raise UsageError(f"cannot write '{self.path}': {e.strerror}") from None
+        write, cogs = self.stream.write, self.chip.cogs
+        return lambda step: write(step.text(self._symbols(cogs[step.cog].code_addr)) + "\n")
+
+    def __exit__(self, *exc):
+        if self.file is not None:
+            self.file.close()
+        return False
 
 
 _PBASIC_REASONS = {"end": "END statement", "stop": "STOP statement", "time": "time limit",
@@ -551,6 +608,11 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--timing", choices=["exact", "realistic"],
                    help="BASIC Stamp only: exact command durations, or with per-instruction interpreter time")
     console_options(r)
+    r.add_argument("--trace-cog", type=int, action="append", choices=range(8), metavar="N",
+                   help="log every PASM instruction cog N executes: cycle, address, disassembly, flags after it "
+                        "and the value written (repeatable; bytecode engine only)")
+    r.add_argument("--trace-cog-file", metavar="FILE", default="-",
+                   help="where --trace-cog writes its log (default: standard output)")
     r.add_argument("--no-progress", action="store_true", help="no progress bar")
     r.add_argument("-q", "--quiet", action="store_true", help="no summary")
     r.set_defaults(func=cmd_run)
