@@ -43,6 +43,7 @@ from __future__ import annotations
 
 from .mathops import BINARY, MASK32, UNARY
 from .spin import random_forward, random_reverse
+from .ahead import CLAIM
 from .timing import MATH_REF
 
 __all__ = ["BlockCompiler", "MAX_OPS", "HOT", "CODE", "BUSY"]
@@ -125,6 +126,9 @@ class _Block:
         self.op_off = 0                 # stack offset when the current bytecode started
         self.bases: set = set()         # cog fields read into locals at entry
         self.end = False
+        self.private = False            # the private variant (ahead.py): only the cog's own window
+        self.dlo = 1 << 30              # lowest and highest local-variable byte offsets touched (from dbase)
+        self.dhi = -(1 << 30)
 
     def snapshot(self) -> dict:
         state = dict(self.__dict__)
@@ -163,6 +167,11 @@ class _Block:
     def touch(self, off: int, size: int = 4) -> None:
         self.lo = min(self.lo, off)
         self.hi = max(self.hi, off + size)
+
+    def loc(self, off: int, size: int = 4) -> None:
+        """The block touches the bytes ``[dbase + off, dbase + off + size)``."""
+        self.dlo = min(self.dlo, off)
+        self.dhi = max(self.dhi, off + size)
 
     def read(self, off: int) -> str:
         v = self.vals.get(off)
@@ -245,9 +254,11 @@ class BlockCompiler:
         self.table = table
         self.boundaries: set = set()      # addresses a block must start at (busy-loop heads)
         self.compiled: dict = {}          # start -> end of every compiled block
+        self.compiled_private: dict = {}  # ... and of every private variant
         self.env = {
             "L": chip.mem_longs, "W": chip.mem_words, "mem": chip.mem, "WATCH": chip.watch,
             "B": table, "STUB": stub, "RF": random_forward, "RR": random_reverse,
+            "P": chip._pblocks, "PSTUB": chip._pstub, "CLAIM": CLAIM, "AH": chip._ahead,
         }
         for f, fn in enumerate(BINARY):
             if fn is not None:
@@ -262,7 +273,21 @@ class BlockCompiler:
     # ------------------------------------------------------------------ public
     def compile(self, pc: int):
         """The block function for hub address ``pc``, or ``None`` if its first bytecode is not compiled."""
+        return self._compile(pc, False)
+
+    def compile_private(self, pc: int):
+        """The private variant of the block at ``pc`` (ahead.py), or ``None``.
+
+        It holds the bytecodes from ``pc`` on that touch only the cog's code,
+        stack and local variables, checks at entry that those lie in the
+        cog's window (returning ``ahead.CLAIM`` if not) and leaves before a
+        local array element outside it; it runs whatever the other cogs do.
+        """
+        return self._compile(pc, True)
+
+    def _compile(self, pc: int, private: bool):
         b = _Block(pc)
+        b.private = private
         while True:
             if b.pc >= 0xFFF0 or b.n >= MAX_OPS or (b.n and b.pc in self.boundaries):
                 break
@@ -276,7 +301,7 @@ class BlockCompiler:
             b.n += 1
             if b.end:
                 break
-        if b.n == 0:
+        if b.n == 0 or not self._code_free(b.start, b.pc, private):
             return None
         if not b.end:
             b.emit(f"c.pc = {b.pc}")
@@ -284,6 +309,22 @@ class BlockCompiler:
             b.emit(f"c.bytecodes += {b.n}")
             b.emit(f"return {b.t_start}")
         return self._finish(b)
+
+    def _code_free(self, start: int, end: int, private: bool) -> bool:
+        """May code at ``[start, end)`` be compiled?  Not where a cog's window is (a private block not at all,
+        an exact one not while that cog is ahead: the fetch must be seen by the guarded interpreter)."""
+        own = self.chip.own
+        k0, k1 = start >> 2, ((end - 1) >> 2) + 1
+        if own.count(0, k0, k1) + own.count(0xFF, k0, k1) == k1 - k0:
+            return True
+        if private:
+            return False
+        cogs = self.chip.cogs
+        for k in range(k0, k1):
+            o = own[k]
+            if 1 <= o <= 8 and cogs[o - 1].cp is not None:
+                return False
+        return True
 
     def add_boundary(self, pc: int) -> None:
         """Make ``pc`` a block start: no block runs through it (the fast-forward stops there)."""
@@ -294,32 +335,63 @@ class BlockCompiler:
             if start < pc < end:
                 self.table[start] = self.env["STUB"]
                 del self.compiled[start]
+        for start, end in list(self.compiled_private.items()):
+            if start < pc < end:
+                self.chip._pblocks[start] = self.chip._pstub
+                del self.compiled_private[start]
 
     # ------------------------------------------------------------------ assembly
     def _finish(self, b: _Block):
         start, end = b.start, b.pc
         code = bytes(self.mem[start:end])
-        head = ["def blk(c, tf, limit):",
-                f"    if tf + {b.reach} >= limit: return -1",
-                f"    if mem[{start}:{end}] != K: B[{start}] = STUB; return -1",
-                "    sp = c.sp"]
+        if b.private:
+            head = ["def blk(c, tf, limit):",
+                    f"    if tf + {b.reach} >= limit: return -1",
+                    f"    if mem[{start}:{end}] != K: P[{start}] = PSTUB; return -1",
+                    "    sp = c.sp"]
+        else:                           # while a cog is ahead, the guarded interpreter runs the bytecodes
+            head = ["def blk(c, tf, limit):",
+                    f"    if tf + {b.reach} >= limit or AH: return -1",
+                    f"    if mem[{start}:{end}] != K: B[{start}] = STUB; return -1",
+                    "    sp = c.sp"]
         # the stack bytes the block touches must be in hub RAM and away from its own code
         lo, hi = b.lo, b.hi
         head.append(f"    if sp & 3 or sp < {max(-lo, end - lo)} or sp > {0x10000 - hi}:")
         head.append(f"        if sp & 3 or sp < {-lo} or sp > {min(0x10000 - hi, start - hi)}: return -1")
         head.append("    i = sp >> 2")
+        if b.private and b.dlo < b.dhi:
+            b.bases.add("dbase")
         for field in sorted(b.bases):
             head.append(f"    {_BASE_LOCALS[field]} = c.{field}")
+        if b.private:
+            # everything the block touches must lie in the cog's window
+            head += ["    wl = c.wlo", "    wh = c.whi"]
+            inside = []
+            if lo < hi:
+                inside += [f"sp + ({lo}) < wl", f"sp + {hi} > wh"]
+            if b.dlo < b.dhi:
+                head.append("    if db & 3: return -1")
+                inside += [f"db + ({b.dlo}) < wl", f"db + {b.dhi} > wh"]
+            if inside:
+                head.append(f"    if {' or '.join(inside)}: return CLAIM")
         src = "\n".join(head + b.lines) + "\n"
         ns: dict = {}
         env = dict(self.env)
         env["K"] = code
-        exec(compile(src, f"<spin block ${start:04X}>", "exec"), env, ns)
+        exec(compile(src, f"<spin {'private ' if b.private else ''}block ${start:04X}>", "exec"), env, ns)
         fn = ns["blk"]
         fn.source = src
-        self.compiled[start] = end
+        if b.private:
+            fn.reach = b.reach
+            fn.foot = (lo, hi, b.dlo, b.dhi)
+            self.compiled_private[start] = end
+        else:
+            self.compiled[start] = end
         watch = self.chip.watch
+        own = self.chip.own
         for k in range(start >> 2, ((end - 1) >> 2) + 1):
+            if own[k]:
+                self.chip._share(k)         # code in a window (never with the cog ahead: see _code_free)
             watch[k] |= CODE
         self.count += 1
         return fn
@@ -446,18 +518,24 @@ class BlockCompiler:
     # -- VAR / LOC longs ($40-$7F)
     def _var(self, b: _Block, op: int) -> None:
         off = op & 0x1C
-        base = b.base("dbase" if op & 0x20 else "vbase")
+        local = bool(op & 0x20)
+        if b.private and not local:
+            raise _Stop                         # a hub variable: shared
+        base = b.base("dbase" if local else "vbase")
         access = op & 3
         T = self.T
         addr = f"({base} + {off}) & 0xFFFF"
-        if access == 0:
-            b.push(f"L[(({base} + {off}) & 0xFFFF) >> 2]")
-            return self._account(b, op, T.var[op])
         if access == 3:
             b.push(addr)
             return self._account(b, op, T.var[op])
+        if b.private:
+            b.loc(off)
+        if access == 0:
+            b.push(f"L[(({base} + {off}) & 0xFFFF) >> 2]")
+            return self._account(b, op, T.var[op])
         a = b.let(addr)
-        b.deopt(f"{a} < 0x8000 and WATCH[{a} >> 2]")
+        if not b.private:                       # (a window holds no watched long)
+            b.deopt(f"{a} < 0x8000 and WATCH[{a} >> 2]")
         if access == 1:
             v = b.pop()
             b.emit(f"if {a} < 0x8000: L[{a} >> 2] = {v}")
@@ -500,12 +578,21 @@ class BlockCompiler:
         if access == 3:
             b.push(a)
             return self._account(b, op, rest)
+        if b.private:                           # only the cog's locals: static, or checked against the window
+            if base in (1, 2):
+                raise _Stop
+            if base == 3 and not indexed:
+                b.loc(off & ~3)
+                w = b.let(f"{a} & 0xFFFF")
+            else:
+                w = b.let(f"{a} & 0xFFFF")
+                b.deopt(f"not wl <= {w} < wh")
         if access == 0:
             b.push(self._sized_read(size, a))
             return self._account(b, op, rest)
-        # writes: leave the block first if the long is watched
-        w = b.let(f"{a} & 0xFFFF")
-        b.deopt(f"{w} < 0x8000 and WATCH[{w} >> 2]")
+        if not b.private:                       # writes: leave the block first if the long is watched
+            w = b.let(f"{a} & 0xFFFF")
+            b.deopt(f"{w} < 0x8000 and WATCH[{w} >> 2]")
         if access == 1:
             v = b.pop()
             b.emit(f"if {w} < 0x8000: {self._sized_store(size, w, v)}")
@@ -728,6 +815,8 @@ class BlockCompiler:
         self._account(b, op, self.T.frame)
 
     def _call(self, b: _Block, op: int) -> None:
+        if b.private:
+            raise _Stop                         # it reads the object's method table
         T = self.T
         if op == 0x06:
             obj = self._byte(b)
@@ -765,6 +854,9 @@ class BlockCompiler:
 
     def _return(self, b: _Block, op: int) -> None:
         T = self.T
+        if b.private:                           # the frame header and the result long
+            b.base("dbase")
+            b.loc(-8, 12)
         self._terminal_rest(b, op)
         b.emit("d = c.dbase")
         b.deopt("not 8 <= d < 0x10000")

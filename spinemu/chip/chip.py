@@ -38,6 +38,7 @@ from typing import Callable, Optional
 from ..diagnostics import EmulationError
 from ..image import BOOT_FRAME, HUB_SIZE, ImageHeader, load_image
 from ..trace import PinTrace
+from .ahead import RunAhead
 from .blocks import HOT as BLOCK_THRESHOLD
 from .cog import PARKED, RUNNING, STOPPED, Cog
 from .control import CogStopped, Reschedule
@@ -99,7 +100,7 @@ class RunResult:
     stats: dict = field(default_factory=dict)
 
 
-class Chip(Pins, Listeners, Scheduler):
+class Chip(Pins, Listeners, RunAhead, Scheduler):
     """A Propeller 1 running one image.
 
     Args:
@@ -114,6 +115,10 @@ class Chip(Pins, Listeners, Scheduler):
         fast_forward: skip provably idle busy-wait loops (results unchanged).
         compile_blocks: run hot bytecode as compiled blocks (:mod:`.blocks`;
             results unchanged).
+        run_ahead: let a cog run past the others through bytecodes that touch
+            only its own stack and code (:mod:`.ahead`; results unchanged;
+            needs ``compile_blocks``).  ``False`` hands over at every hub
+            access in cycle order.
 
     Raises:
         ImageError: if ``image`` is not a valid Propeller image.
@@ -122,7 +127,8 @@ class Chip(Pins, Listeners, Scheduler):
 
     def __init__(self, image: bytes, *, compat: str = "spinsim", inputs=None,
                  source_map: Optional[Callable] = None, fast_forward: bool = True,
-                 timing: Optional[Timing] = None, compile_blocks: bool = True, labels=None):
+                 timing: Optional[Timing] = None, compile_blocks: bool = True, labels=None,
+                 run_ahead: bool = True):
         if compat not in COMPAT_MODES:
             raise ValueError(f"compat must be one of {COMPAT_MODES}, not {compat!r}")
         binary = load_image(bytes(image))
@@ -196,6 +202,7 @@ class Chip(Pins, Listeners, Scheduler):
             self._run_plain = self._run_blocks
         else:
             self._run_plain = self._run_spin
+        self._init_run_ahead(run_ahead)     # running ahead (ahead.py)
         self.now = 0
         #: the run's cycle limit (engines that run ahead never pass it)
         self.run_limit = _NEVER
@@ -245,6 +252,7 @@ class Chip(Pins, Listeners, Scheduler):
             return
         if c.state == PARKED:
             self._unpark(c, t)
+        self._stop_ahead(c)
         if c in self._pin_waiters:
             self._pin_waiters.remove(c)
         c.state = STOPPED
@@ -425,7 +433,8 @@ class Chip(Pins, Listeners, Scheduler):
     def _ff_stats(self) -> dict:
         return {"fast_forward": self.fast_forward, "busy_loops_learned": self._ff_loops,
                 "bytecodes_skipped": self._ff_skipped,
-                "blocks_compiled": self._compiler.count if self._compiler is not None else 0}
+                "blocks_compiled": self._compiler.count if self._compiler is not None else 0,
+                "run_ahead": self.run_ahead, "private_stretches": self._stretches, "rollbacks": self._rollbacks}
 
 
     def _boot(self) -> None:

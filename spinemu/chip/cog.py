@@ -48,6 +48,9 @@ class Cog:
         "bytecodes", "instructions",
         # fast-forward: the learned busy loop, and when to try learning next
         "busy", "learn_mark", "learn_after", "park_t0",
+        # running ahead (ahead.py): the cog's private stack window [wlo, whi) in bytes,
+        # and the checkpoint of its open private stretch (None while it is not ahead)
+        "wlo", "whi", "cp",
     )
 
     def __init__(self, cog_id: int):
@@ -64,6 +67,8 @@ class Cog:
         self.learn_mark = 0
         self.learn_after = 0
         self.park_t0 = 0
+        self.wlo = self.whi = 0
+        self.cp = None
         self.reset_registers()
 
     def reset_registers(self) -> None:

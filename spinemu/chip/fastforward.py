@@ -27,6 +27,8 @@ Skipped bytecodes are counted in the statistics as executed.
 """
 from __future__ import annotations
 
+from .ahead import AHEAD
+
 __all__ = ["BusyLoop", "LoopMemory", "learn_busy_loop", "IMPURE_OPS", "LEARN_AFTER", "LEARN_HORIZON"]
 
 #: bytecodes a cog runs without a wait before a learning attempt
@@ -44,14 +46,28 @@ _TIME_REGS = frozenset({0x1F1, 0x1F2, 0x1FC, 0x1FD})
 
 
 class _TrackedView:
-    """A memory view that logs reads and writes (used only while learning)."""
+    """A memory view that logs reads and writes (used only while learning).
 
-    __slots__ = ("view", "shift", "log")
+    Like the guarded interpreter's views (ahead.py) it first rolls back a cog
+    that is ahead if the access reaches into its window.
+    """
 
-    def __init__(self, view, shift, log):
-        self.view, self.shift, self.log = view, shift, log
+    __slots__ = ("view", "shift", "log", "chip", "watch")
+
+    def __init__(self, view, shift, log, chip):
+        self.view, self.shift, self.log, self.chip, self.watch = view, shift, log, chip, chip.watch
+
+    def _guard(self, i):
+        if isinstance(i, slice):
+            start, stop, _ = i.indices(len(self.view))
+            if start < stop:
+                self.chip._guard_range(start << self.shift, stop << self.shift)
+        elif self.watch[((i << self.shift) & 0xFFFF) >> 2] & AHEAD:
+            chip = self.chip
+            chip._intrude(chip._g_cog, i << self.shift, chip._g_key)
 
     def __getitem__(self, i):
+        self._guard(i)
         v = self.view[i]
         if isinstance(i, slice):
             for k in range(*i.indices(len(self.view))):
@@ -61,6 +77,7 @@ class _TrackedView:
         return v
 
     def __setitem__(self, i, v):
+        self._guard(i)
         self.log.append((1, self.shift, i, self.view[i], v))
         self.view[i] = v
 
@@ -73,9 +90,9 @@ class _TrackingChip:
 
     def __init__(self, chip, log):
         self._chip = chip
-        self.mem = _TrackedView(chip.mem, 0, log)
-        self.mem_words = _TrackedView(chip.mem_words, 1, log)
-        self.mem_longs = _TrackedView(chip.mem_longs, 2, log)
+        self.mem = _TrackedView(chip.mem, 0, log, chip)
+        self.mem_words = _TrackedView(chip.mem_words, 1, log, chip)
+        self.mem_longs = _TrackedView(chip.mem_longs, 2, log, chip)
         self.registers = chip.registers
 
     def __getattr__(self, name):
@@ -98,14 +115,17 @@ class BusyLoop:
         period: cycles per iteration (a multiple of 16).
         bytecodes: bytecodes per iteration.
         reads: ``(shift, index, value)``: every hub value the iteration read.
+        longs: the hub longs the iteration reads or writes, outside its own stack
+            above the lowest stack pointer (no cog may run ahead through them, ahead.py).
     """
 
-    __slots__ = ("head", "state", "phase", "period", "bytecodes", "reads", "skipped")
+    __slots__ = ("head", "state", "phase", "period", "bytecodes", "reads", "skipped", "longs")
 
-    def __init__(self, head, state, phase, period, bytecodes, reads):
+    def __init__(self, head, state, phase, period, bytecodes, reads, longs=()):
         self.head, self.state, self.phase = head, state, phase
         self.period, self.bytecodes, self.reads = period, bytecodes, reads
         self.skipped = 0
+        self.longs = longs
 
     def still_valid(self, chip, c) -> bool:
         """Is cog ``c`` at the head, in the learned state, with the memory it reads unchanged?"""
@@ -202,6 +222,8 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
             return INTERRUPTED
         if _impure(chip, c, op):
             return None
+        if chip.watch[c.pc >> 2] & AHEAD:   # code in the window of a cog ahead: the exact order decides
+            return INTERRUPTED
         key = (c.pc, c.t & 15, cog_state(c))
         if key in seen:
             start = seen[key]
@@ -217,6 +239,7 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
         marks.append((c.t, len(log), c.sp))
         t = c.t
         c.pc = (c.pc + 1) & 0xFFFF
+        chip._g_cog, chip._g_key = c, tf + acc[op]
         try:
             c.t = tf + handlers[op](c, op, t)
         except Reschedule as e:      # not expected for pure ops; be safe
@@ -261,8 +284,9 @@ def _qualify(chip, entries, key, period: int, bytecodes: int, sp_head: int):
         if mem[b] != v:
             return None
     pc, phase, state = key
+    longs = {((i << s) & 0xFFFF) >> 2 for s, i in reads} | {(b & 0xFFFF) >> 2 for b in written if b < sp_head}
     return BusyLoop(pc, state, phase, period, bytecodes,
-                    tuple((s, i, v) for (s, i), v in reads.items()))
+                    tuple((s, i, v) for (s, i), v in reads.items()), tuple(sorted(k for k in longs if k < 0x2000)))
 
 
 def tracking_handlers(chip, timing):

@@ -13,9 +13,10 @@ event leaves it by exception, see :mod:`spinemu.chip.control`).
 """
 from __future__ import annotations
 
-from .blocks import BUSY, BlockCompiler
+from .blocks import BUSY, CODE, BlockCompiler
 from .cog import PARKED, RUNNING, Cog
 from .control import CogStopped, Preempted, RebootRequested, Reschedule
+from .ahead import AHEAD, NOPRIV, SHARED
 from .fastforward import INTERRUPTED, LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
 
 __all__ = ["Scheduler", "NEVER"]
@@ -79,6 +80,9 @@ class Scheduler:
                 self._cogs_changed = False
                 running = [k for k in cogs if k.state == RUNNING]
                 generic = any(k.engine.__class__ is not str for k in running)
+                # a cog may run ahead (ahead.py) unless a cog whose hub accesses are not checked runs
+                self._private_ok = (self._pblocks is not None and not traced
+                                    and not any(k.engine.__class__ is not str for k in cogs if k.running))
             # the two running cogs whose next bytecodes reach the hub first (lowest id on ties)
             c = c2 = None
             ck = ck2 = 0
@@ -142,6 +146,8 @@ class Scheduler:
             if listening and until > self._listen_at:
                 until = self._listen_at         # back here in time to tell the pin listeners
             self.now = t
+            if c.cp is not None:        # every other cog's next access comes after what it ran ahead
+                self._close(c)
             try:
                 if generic and c.engine.__class__ is not str:
                     c.engine.run(c, until)
@@ -250,7 +256,12 @@ class Scheduler:
             for shift, i, _ in p.busy.reads:
                 watch[((i << shift) & 0xFFFF) >> 2] |= BUSY
         if c.t < t_limit:
+            pending = self._preempt             # (meant for the cog whose write woke this one)
+            if pending:
+                self._end_preemption()
             self._run_spin(c, t_limit)
+            if pending:
+                self._request_preemption()
 
     def watch_hit(self, writer: Cog, hub_addr: int, t: int, op: int) -> None:
         """``writer``'s bytecode ``op``, started at ``t``, is about to write a hub long a parked loop reads.
@@ -264,6 +275,8 @@ class Scheduler:
 
     def watch_hit_at(self, writer: Cog, hub_addr: int, key: int) -> None:
         """:meth:`watch_hit` for a write at cycle ``key`` (a PASM cog's hub window)."""
+        if self._ahead and self.watch[(hub_addr & 0xFFFF) >> 2] & CODE:
+            self._code_write(writer, key)   # the cogs ahead may have run that code after the write
         woke = False
         for p in list(self._parked):
             if any(((i << shift) & 0xFFFF) >> 2 == hub_addr >> 2 for shift, i, _ in p.busy.reads):
@@ -289,6 +302,7 @@ class Scheduler:
             loop = learn_busy_loop(self, c, handlers, log, until)
         finally:
             log.clear()
+            self._g_cog = None
         c.learn_mark = c.bytecodes
         if loop is INTERRUPTED:
             return                      # not a failure: try again at the next chance
@@ -300,6 +314,12 @@ class Scheduler:
             c.busy = loop
             self._ff_loops += 1
             self._loop_memory.add(c, loop)
+            own, me = self.own, c.id + 1
+            frame = range((c.dbase - 8) >> 2, (c.sp + 3) >> 2)
+            for k in loop.longs:            # a parked loop reads them all the time: in no other cog's window
+                o = own[k]
+                if o != SHARED and o != me and (o or k not in frame):
+                    self._share(k)
             if self._compiler is not None:
                 self._compiler.add_boundary(loop.head)
 
@@ -309,6 +329,8 @@ class Scheduler:
         With ``stop_pc``, also stop when the cog comes back to that address
         (a loop head, for the fast-forward's learner).
         """
+        if self._ahead:                         # another cog is ahead: every access is checked (ahead.py)
+            return self._run_guarded(c, limit, stop_pc)
         mem = self.mem
         H = self.handlers
         ACC = self.access_at
@@ -354,7 +376,11 @@ class Scheduler:
 
         Blocks check themselves that they end before ``limit``; where one
         cannot run, the bytecode is interpreted exactly as :meth:`_run_spin`
-        does it, with the same exits.
+        does it, with the same exits.  Where the next block cannot end before
+        ``limit`` but has a private variant, the cog runs on past ``limit``
+        through private blocks (:meth:`~.ahead.RunAhead._run_private`).  While
+        another cog is ahead, bytecodes are interpreted by the guarded
+        handlers (ahead.py).
         """
         if self._preempt:                       # as _run_spin: a pending preemption ends the slice at once
             self._end_preemption()
@@ -363,16 +389,18 @@ class Scheduler:
         if not 0 <= pc < 0x10000:
             return self._run_spin(c, limit, stop_pc)
         B = self._blocks
+        P = self._pblocks if self._private_ok else None
+        AH = self._ahead
         mem = self.mem
         H = self.handlers
         ACC = self.access_at
-        P = c.hub_phase
+        Ph = c.hub_phase
         t = c.t
         tf = t
         try:
             while True:
                 tf = t + 12
-                tf += (P - tf) & 15
+                tf += (Ph - tf) & 15
                 r = B[pc](c, tf, limit)
                 if r >= 0:
                     t = r
@@ -382,15 +410,34 @@ class Scheduler:
                     continue
                 if r != -1:
                     t = -2 - r
+                    pc = c.pc
+                    tf = t + 12
+                    tf += (Ph - tf) & 15
+                elif P is not None and P[pc] is not NOPRIV:
+                    c.t = t
+                    if self._run_private(c, limit, stop_pc):
+                        return
                 # the interpreter's step, as in _run_spin
-                pc = c.pc
                 op = mem[pc]
-                tf = t + 12
-                tf += (P - tf) & 15
-                if tf + ACC[op] >= limit:
+                key = tf + ACC[op]
+                if key >= limit:
+                    if P is not None and P[pc] is not NOPRIV:
+                        c.t = t
+                        if self._run_private(c, limit, stop_pc):
+                            return
                     break
-                c.pc = pc + 1
-                t = tf + H[op](c, op, t)
+                if AH:
+                    if self.watch[(pc & 0xFFFF) >> 2] & AHEAD:    # code in the window of a cog ahead
+                        self._intrude(c, pc, tf)            # (its bytes may change before the key)
+                        self._end_preemption()
+                        break
+                    self._g_cog, self._g_key = c, key       # (operands are read through the guarded views)
+                    c.pc = pc + 1
+                    t = tf + self._guarded()[op](c, op, t)
+                    self._g_cog = None
+                else:
+                    c.pc = pc + 1
+                    t = tf + H[op](c, op, t)
                 c.bytecodes += 1
                 if self._preempt:
                     self._end_preemption()
@@ -416,6 +463,8 @@ class Scheduler:
             raise
         except IndexError:
             raise self.fault(c, c.pc - 1, "stack or address out of hub range") from None
+        finally:
+            self._g_cog = None
         if c.state == RUNNING:
             c.t = t
 
