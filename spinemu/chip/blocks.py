@@ -43,7 +43,7 @@ from __future__ import annotations
 
 from .mathops import BINARY, MASK32, UNARY
 from .spin import random_forward, random_reverse
-from .ahead import CLAIM
+from .ahead import AHEAD, CLAIM
 from .timing import MATH_REF
 
 __all__ = ["BlockCompiler", "MAX_OPS", "HOT", "CODE", "BUSY"]
@@ -129,6 +129,7 @@ class _Block:
         self.private = False            # the private variant (ahead.py): only the cog's own window
         self.dlo = 1 << 30              # lowest and highest local-variable byte offsets touched (from dbase)
         self.dhi = -(1 << 30)
+        self.var_reads: set = set()     # offsets (from vbase) of the hub variables it reads
 
     def snapshot(self) -> dict:
         state = dict(self.__dict__)
@@ -349,9 +350,9 @@ class BlockCompiler:
                     f"    if tf + {b.reach} >= limit: return -1",
                     f"    if mem[{start}:{end}] != K: P[{start}] = PSTUB; return -1",
                     "    sp = c.sp"]
-        else:                           # while a cog is ahead, the guarded interpreter runs the bytecodes
+        else:
             head = ["def blk(c, tf, limit):",
-                    f"    if tf + {b.reach} >= limit or AH: return -1",
+                    f"    if tf + {b.reach} >= limit: return -1",
                     f"    if mem[{start}:{end}] != K: B[{start}] = STUB; return -1",
                     "    sp = c.sp"]
         # the stack bytes the block touches must be in hub RAM and away from its own code
@@ -359,10 +360,23 @@ class BlockCompiler:
         head.append(f"    if sp & 3 or sp < {max(-lo, end - lo)} or sp > {0x10000 - hi}:")
         head.append(f"        if sp & 3 or sp < {-lo} or sp > {min(0x10000 - hi, start - hi)}: return -1")
         head.append("    i = sp >> 2")
-        if b.private and b.dlo < b.dhi:
+        if b.dlo < b.dhi:
             b.bases.add("dbase")
         for field in sorted(b.bases):
             head.append(f"    {_BASE_LOCALS[field]} = c.{field}")
+        if not b.private:
+            # while a cog is ahead (ahead.py) nothing here may touch its window: the stack and
+            # locals must lie in this cog's own window, the hub variables read outside any window
+            inside = []
+            if lo < hi:
+                inside += [f"sp + ({lo}) < c.wlo", f"sp + {hi} > c.whi"]
+            if b.dlo < b.dhi:
+                inside += ["db & 3", f"db + ({b.dlo}) < c.wlo", f"db + {b.dhi} > c.whi"]
+            if inside:
+                head.append(f"    if AH and ({' or '.join(inside)}): return CLAIM")
+            if b.var_reads:
+                longs = " | ".join(f"WATCH[((vb + {off}) & 0xFFFF) >> 2]" for off in sorted(b.var_reads))
+                head.append(f"    if AH and ({longs}) & {AHEAD}: return -1")
         if b.private:
             # everything the block touches must lie in the cog's window
             head += ["    wl = c.wlo", "    wh = c.whi"]
@@ -381,9 +395,9 @@ class BlockCompiler:
         exec(compile(src, f"<spin {'private ' if b.private else ''}block ${start:04X}>", "exec"), env, ns)
         fn = ns["blk"]
         fn.source = src
+        fn.reach = b.reach
+        fn.foot = (lo, hi, b.dlo, b.dhi)
         if b.private:
-            fn.reach = b.reach
-            fn.foot = (lo, hi, b.dlo, b.dhi)
             self.compiled_private[start] = end
         else:
             self.compiled[start] = end
@@ -528,9 +542,11 @@ class BlockCompiler:
         if access == 3:
             b.push(addr)
             return self._account(b, op, T.var[op])
-        if b.private:
+        if local:
             b.loc(off)
         if access == 0:
+            if not local:
+                b.var_reads.add(off)
             b.push(f"L[(({base} + {off}) & 0xFFFF) >> 2]")
             return self._account(b, op, T.var[op])
         a = b.let(addr)
@@ -587,7 +603,11 @@ class BlockCompiler:
             else:
                 w = b.let(f"{a} & 0xFFFF")
                 b.deopt(f"not wl <= {w} < wh")
+        elif base == 3 and not indexed:
+            b.loc(off & ~3)
         if access == 0:
+            if not b.private and not (base == 3 and not indexed):   # not in the window of a cog ahead
+                b.deopt(f"AH and WATCH[({a} & 0xFFFF) >> 2] & {AHEAD}")
             b.push(self._sized_read(size, a))
             return self._account(b, op, rest)
         if not b.private:                       # writes: leave the block first if the long is watched
@@ -836,7 +856,10 @@ class BlockCompiler:
         b.emit(f"ent = L[((pb + {4 * m}) & 0xFFFF) >> 2]")
         b.emit("f6 = c.dcall")
         b.emit(f"nsp = {b.sp_expr()} + (ent >> 16)")
-        b.deopt("nsp > 0x8000 or not 0 <= f6 < 0x10000")
+        tables = f"WATCH[((pb + {4 * m}) & 0xFFFF) >> 2]"
+        if op == 0x06:
+            tables += f" | WATCH[((c.pbase + {4 * obj}) & 0xFFFF) >> 2]"
+        b.deopt(f"nsp > 0x8000 or not 0 <= f6 < 0x10000 or AH and ({tables} | WATCH[f6 >> 2]) & {AHEAD}")
         if op == 0x06:
             b.emit("c.pbase = pb")
             b.emit("c.pbase_hi = pbh")
@@ -854,9 +877,8 @@ class BlockCompiler:
 
     def _return(self, b: _Block, op: int) -> None:
         T = self.T
-        if b.private:                           # the frame header and the result long
-            b.base("dbase")
-            b.loc(-8, 12)
+        b.base("dbase")                         # the frame header and the result long
+        b.loc(-8, 12)
         self._terminal_rest(b, op)
         b.emit("d = c.dbase")
         b.deopt("not 8 <= d < 0x10000")

@@ -37,6 +37,8 @@ LEARN_AFTER = 2000
 LEARN_HORIZON = 20_000
 #: bytecodes the tracking interpreter runs in one attempt
 LEARN_BUDGET = 600
+#: repeated states whose iteration was not pure after which an attempt gives up
+LEARN_TRIES = 4
 #: what :func:`learn_busy_loop` returns when it had to stop before finding a loop
 INTERRUPTED = "interrupted"
 #: opcodes that touch time, pins, cogs, locks, the clock, or wait
@@ -211,6 +213,7 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
     from .control import Reschedule  # local: keep module import light
     acc = chip.access_at
     chip.learn_tracked = 0
+    failed = 0
     for _ in range(LEARN_BUDGET):
         chip.learn_tracked += 1
         if c.state != "running" or chip._preempt:
@@ -232,6 +235,9 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
             loop = _qualify(chip, log[pos0:], key, c.t - t0, len(marks) - start, low_sp)
             if loop is not None:
                 return loop
+            failed += 1
+            if failed >= LEARN_TRIES:       # it keeps changing what it writes: not a busy-wait
+                return None
             seen.clear()
             marks.clear()
             log.clear()

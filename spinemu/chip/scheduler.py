@@ -16,7 +16,7 @@ from __future__ import annotations
 from .blocks import BUSY, CODE, BlockCompiler
 from .cog import PARKED, RUNNING, Cog
 from .control import CogStopped, Preempted, RebootRequested, Reschedule
-from .ahead import AHEAD, NOPRIV, SHARED
+from .ahead import AHEAD, CLAIM, NOPRIV, SHARED
 from .fastforward import INTERRUPTED, LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
 
 __all__ = ["Scheduler", "NEVER"]
@@ -35,6 +35,8 @@ def _interpreted(c, tf, limit):
 
 #: compilations of one address (its code keeps changing) after which it stays interpreted
 _RECOMPILE_LIMIT = 8
+#: bytecodes between learning attempts of a cog whose attempts keep failing, at most
+_LEARN_BACKOFF_MAX = 1 << 22
 
 
 class Scheduler:
@@ -307,9 +309,10 @@ class Scheduler:
         if loop is INTERRUPTED:
             return                      # not a failure: try again at the next chance
         if loop is None:
-            # wait until the failed attempt's cost is small against normal running
+            # wait until the failed attempt's cost is small against normal running, and
+            # twice as long after each failure in a row (compiled code runs many times faster)
             c.busy = None
-            c.learn_after = max(LEARN_AFTER, 16 * self.learn_tracked)
+            c.learn_after = min(max(LEARN_AFTER, 16 * self.learn_tracked, 2 * c.learn_after), _LEARN_BACKOFF_MAX)
         else:
             c.busy = loop
             self._ff_loops += 1
@@ -397,6 +400,7 @@ class Scheduler:
         Ph = c.hub_phase
         t = c.t
         tf = t
+        claimed = -1
         try:
             while True:
                 tf = t + 12
@@ -408,7 +412,11 @@ class Scheduler:
                     if pc == stop_pc:
                         break
                     continue
-                if r != -1:
+                if r == CLAIM:                  # a cog is ahead: the block's stack must be this cog's
+                    if claimed != pc and self._claim_for(c, B[pc]):
+                        claimed = pc
+                        continue
+                elif r != -1:
                     t = -2 - r
                     pc = c.pc
                     tf = t + 12
