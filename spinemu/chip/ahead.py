@@ -55,20 +55,26 @@ from __future__ import annotations
 from .cog import RUNNING
 from .control import CogStopped, RebootRequested, Reschedule
 
-__all__ = ["RunAhead", "AHEAD", "SHARED", "CLAIM", "REDO", "NOPRIV", "RUN_AHEAD"]
+__all__ = ["RunAhead", "AHEAD", "RO", "SHARED", "NORO", "CLAIM", "REDO", "WANT_RO", "NOPRIV", "RUN_AHEAD"]
 
 #: ``Chip.watch`` bit: the long is in the window of a cog that is running ahead
 AHEAD = 4
-CODE = 2                                    # blocks.CODE: compiled code lies in the long
-_AHEAD_OR_CODE = AHEAD | CODE
+#: ``Chip.watch`` bit: private blocks may read the long; a write first rolls back every cog ahead
+RO = 8
+CODE = 2                                    # blockops.CODE: compiled code lies in the long
+_WRITE_CHECKED = AHEAD | CODE | RO
 #: ``Chip.own`` value of a long that more than one cog touched: never claimed again
 SHARED = 0xFF
+#: ``Chip.own`` value of a long written while read-only: never read-only again
+NORO = 0xFE
 #: cycles a cog may run past the scheduler's limit in one turn (then it lets the scheduler look again)
 RUN_AHEAD = 1 << 20
 #: what a private block returns when its footprint is not inside the cog's window
 CLAIM = -(1 << 63)
 #: what the private block table's stub returns after compiling: call again
 REDO = CLAIM + 1
+#: what a private block returns when a hub long it reads is not read-only (yet)
+WANT_RO = CLAIM + 2
 #: longs claimed past the footprint when a window grows (fewer claims)
 _SLACK_LONGS = 16
 
@@ -98,6 +104,9 @@ class RunAhead:
         self._g_key = 0
         self._rollbacks = 0
         self._stretches = 0
+        #: the hub address a private block wants read-only when it leaves (set by the block)
+        self._want = [-1]
+        self.watch[0x2000:] = bytes([RO]) * (len(self.watch) - 0x2000)    # the ROM is never written
         if enabled and self.compile_blocks:
             stub = self._make_private_stub()
             self._pblocks = [stub] * 0x10000
@@ -172,10 +181,33 @@ class RunAhead:
             self.own[lo:hi] = bytes(hi - lo)
         c.wlo = c.whi = 0
 
+    def _make_ro(self, k: int) -> bool:
+        """Let private blocks read hub long ``k`` from now on (a write to it will roll back every cog ahead)."""
+        if not 0 <= k < 0x2000:
+            return k >= 0x2000
+        o = self.own[k]
+        if 1 <= o <= 8 or o == NORO or self.watch[k] & AHEAD:
+            return False
+        self.watch[k] |= RO
+        return True
+
+    def _want_ro(self, c, fn) -> bool:
+        """Make read-only the hub longs private block ``fn`` reads at cog ``c``'s present bases."""
+        bases = {"vb": c.vbase, "pb": c.pbase, "db": c.dbase, None: 0}
+        return all(self._make_ro(((bases[base] + off) & 0xFFFF) >> 2) for base, off in fn.ro)
+
+    def _ro_written(self, b, k: int, key: int) -> None:
+        """Cog ``b`` writes read-only hub long ``k`` at ``key``: the cogs ahead may have read it later."""
+        self.watch[k] &= ~RO
+        self.own[k] = NORO
+        if self._ahead:
+            self._sync_all(b, key)
+            self._request_preemption()
+
     def _share(self, k: int) -> None:
         """Hub long ``k`` is read by a parked loop or holds code: never in a window again."""
         o = self.own[k]
-        if o == SHARED:
+        if o > 8:
             return
         if o:
             c = self.cogs[o - 1]
@@ -241,8 +273,8 @@ class RunAhead:
                     continue
                 if r == REDO:
                     continue
-                if r == CLAIM:
-                    if claimed != pc and self._claim_for(c, f):
+                if r == CLAIM or r == WANT_RO:
+                    if claimed != pc and (self._claim_for(c, f) if r == CLAIM else self._want_ro(c, f)):
                         claimed = pc
                         continue
                 elif r != -1:                   # stopped before a bytecode it does not compile
@@ -250,6 +282,7 @@ class RunAhead:
                     pc = c.pc
                     tf = t + 12
                     tf += (ph - tf) & 15
+                self._want[0] = -1
             op = mem[pc]
             if tf + ACC[op] >= limit:
                 break
@@ -307,13 +340,14 @@ class RunAhead:
         moved = False
         opened = False
         claimed = -1
+        want = self._want
         while 0 <= pc < 0x10000:
             tf = t + 12
             tf += (ph - tf) & 15
             f = P[pc]
             if f is NOPRIV:
                 break
-            if c.cp is None and tf + f.reach >= limit:
+            if c.cp is None:                    # from here on it may run past limit
                 c.t = t
                 self._open(c)
                 opened = True
@@ -327,16 +361,23 @@ class RunAhead:
                 continue
             if r == REDO:
                 continue
-            if r == CLAIM:
+            if r == CLAIM or r == WANT_RO:
                 c.t = t
-                if claimed != pc and self._claim_for(c, f):
+                if claimed != pc and (self._claim_for(c, f) if r == CLAIM else self._want_ro(c, f)):
                     claimed = pc
                     continue
                 break
             if r != -1:                         # it stopped before a bytecode that is not private
                 t = -2 - r
+                pc = c.pc
                 moved = True
+                if want[0] >= 0:                # ... because a long it reads was not read-only yet
+                    k = (want[0] & 0xFFFF) >> 2
+                    want[0] = -1
+                    if self._make_ro(k):
+                        continue
             break
+        want[0] = -1
         c.t = t
         if opened and not moved:
             self._close(c)
@@ -429,8 +470,21 @@ class RunAhead:
             w = watch[k]
             if w & AHEAD:
                 self._intrude(self._g_cog, k << 2, self._g_key)
-            elif write and w & CODE:
-                self._code_write(self._g_cog, self._g_key)
+            elif write and w & (CODE | RO) and k < 0x2000:
+                self._guard_write(k << 2)
+
+    def _guard_write(self, hub_addr: int) -> None:
+        """The guarded bytecode writes ``hub_addr`` (a stack push, say), which is watched for running ahead."""
+        k = (hub_addr & 0xFFFF) >> 2
+        if k >= 0x2000:
+            return                              # the ROM: the write is ignored
+        w = self.watch[k]
+        if w & AHEAD:
+            self._intrude(self._g_cog, hub_addr, self._g_key)
+        elif w & RO:
+            self._ro_written(self._g_cog, k, self._g_key)
+        elif w & CODE:                          # compiled code: the cogs ahead may have run it
+            self._code_write(self._g_cog, self._g_key)
 
     def _code_write(self, b, key: int) -> None:
         """Cog ``b`` writes compiled code at ``key``: a cog ahead may have run it later (roll them all back)."""
@@ -462,14 +516,8 @@ class _GuardedView:
             start, stop, _ = i.indices(len(self.view))
             if start < stop:
                 self.chip._guard_range(start << self.shift, stop << self.shift, True)
-        else:
-            w = self.watch[((i << self.shift) & 0xFFFF) >> 2]
-            if w & _AHEAD_OR_CODE:
-                chip = self.chip
-                if w & AHEAD:
-                    chip._intrude(chip._g_cog, i << self.shift, chip._g_key)
-                else:                   # a stack push into compiled code: the cogs ahead may have run it
-                    chip._code_write(chip._g_cog, chip._g_key)
+        elif self.watch[((i << self.shift) & 0xFFFF) >> 2] & _WRITE_CHECKED:
+            self.chip._guard_write(i << self.shift)
         self.view[i] = v
 
     def __len__(self):

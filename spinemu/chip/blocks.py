@@ -17,7 +17,17 @@ cycle counts folded into its text:
   (:meth:`Scheduler._run_spin`).  A block first checks that its *last*
   access, with the slowest value-dependent paths, is still before that
   limit; if not, it does nothing and the run loop interprets bytecodes one by
-  one as before.
+  one as before.  A WAITCNT does not end a block: the block checks the limit
+  again for the bytecodes after the wait, and leaves after the wait if they
+  would pass it.
+* **Loops run inside the block.**  A block whose last bytecode jumps back to
+  its own start with the stack as it found it (a ``repeat`` whose body is one
+  block) goes round again without returning, while its next pass still ends
+  before the limit.
+* **Stack stores are lazy.**  A stack slot written twice in a block is
+  stored once, with its last value, before anything that could read hub
+  RAM there (a hub variable, a computed address, a frame, the block's end):
+  nothing else runs while a block runs, so only the last value is seen.
 * **Rare things are left to the interpreter** ("deoptimisation"): a write to
   a hub long that a parked busy loop reads or that holds compiled code, an
   unusual stack pointer, a call that would overflow the stack.  The block
@@ -28,23 +38,30 @@ cycle counts folded into its text:
   if they differ; writes that go through the checked paths to a long holding
   compiled code leave the block first (``Chip.watch`` bit ``CODE``), so a
   block never runs bytes that its own earlier bytecodes changed.
+* **Private variants** (:meth:`BlockCompiler.compile_private`, for running
+  ahead, :mod:`.ahead`) hold only bytecodes that touch the cog's own window
+  (stack, locals), code, and hub longs that are read-only for now
+  (``Chip.watch`` bit ``RO``); they check that at entry.
 
 Compiled: constants, VAR/LOC longs, memory access with every assignment
 operator but the undefined ones, math, FRAME, CALL, CALL_OBJ, RETURN,
 jumps, REPEAT, CASE tests and WAITCNT.  Everything touching registers, pins,
-cogs, locks or the clock is interpreted.
+cogs, locks or the clock is interpreted.  The bytecode families that read
+and write data are in :mod:`.blockops`.
 
 A block function is called as ``f(cog, tf, limit)`` with ``tf`` the cycle its
 first fetch completes; it returns the start cycle of the cog's next bytecode,
-``-1`` when it did nothing, or ``-2 - t`` when it stopped early before a
-bytecode starting at ``t`` that the interpreter must run.
+``-1`` when it did nothing, ``-2 - t`` when it stopped early before a
+bytecode starting at ``t`` that the interpreter must run, or (private
+variants) :data:`.ahead.CLAIM` / :data:`.ahead.WANT_RO` when its window or
+read-only longs must be claimed first.
 """
 from __future__ import annotations
 
+from .ahead import AHEAD, CLAIM, RO, WANT_RO
+from .blockops import BUSY, CODE, DataOps, _Stop, _is_literal
 from .mathops import BINARY, MASK32, UNARY
 from .spin import random_forward, random_reverse
-from .ahead import AHEAD, CLAIM
-from .timing import MATH_REF
 
 __all__ = ["BlockCompiler", "MAX_OPS", "HOT", "CODE", "BUSY"]
 
@@ -52,90 +69,58 @@ __all__ = ["BlockCompiler", "MAX_OPS", "HOT", "CODE", "BUSY"]
 MAX_OPS = 48
 #: times a block start is reached before it is compiled (cold code stays interpreted)
 HOT = 8
-#: ``Chip.watch`` bits: a parked busy loop reads the long, compiled code lies in it
-BUSY, CODE = 1, 2
-
-# math operators as expressions over operands that are names or literals
-_BINARY_EXPR = {
-    0x02: "{x} >> ({y} & 31)",
-    0x03: "({x} << ({y} & 31)) & 0xFFFFFFFF",
-    0x08: "{x} & {y}",
-    0x0A: "{x} | {y}",
-    0x0B: "{x} ^ {y}",
-    0x0C: "({x} + {y}) & 0xFFFFFFFF",
-    0x0D: "({x} - {y}) & 0xFFFFFFFF",
-    0x10: "0xFFFFFFFF if {x} and {y} else 0",
-    0x12: "0xFFFFFFFF if {x} or {y} else 0",
-    0x14: "({x} * {y}) & 0xFFFFFFFF",
-    0x19: "0xFFFFFFFF if {x} ^ 0x80000000 < {y} ^ 0x80000000 else 0",
-    0x1A: "0xFFFFFFFF if {x} ^ 0x80000000 > {y} ^ 0x80000000 else 0",
-    0x1B: "0xFFFFFFFF if {x} != {y} else 0",
-    0x1C: "0xFFFFFFFF if {x} == {y} else 0",
-    0x1D: "0xFFFFFFFF if {x} ^ 0x80000000 <= {y} ^ 0x80000000 else 0",
-    0x1E: "0xFFFFFFFF if {x} ^ 0x80000000 >= {y} ^ 0x80000000 else 0",
-}
-_UNARY_EXPR = {
-    0x06: "-{x} & 0xFFFFFFFF",
-    0x07: "{x} ^ 0xFFFFFFFF",
-    0x11: "{x}.bit_length()",
-    0x13: "1 << ({x} & 31)",
-    0x1F: "0 if {x} else 0xFFFFFFFF",
-}
-# the loop parameter of the value-dependent math paths (timing.math_param), as expressions
-_PARAM_EXPR = {
-    0x16: "(-{y} & 0xFFFFFFFF if {y} & 0x80000000 else {y}).bit_length()",
-    0x17: "(-{y} & 0xFFFFFFFF if {y} & 0x80000000 else {y}).bit_length()",
-    0x11: "32 - {x}.bit_length()",
-}
-
 
 _BASE_LOCALS = {"vbase": "vb", "dbase": "db", "pbase": "pb"}
-
-
-class _Stop(Exception):
-    """The bytecode cannot be compiled: the block ends before it."""
+#: placeholders in generated text: ``nb + `` in a block that loops, else nothing; and a deopt
+#: before the first bytecode: nothing was done (on the first pass of a loop)
+_NB = "@NB@"
+_FIRST_EXIT = "@FIRST@"
 
 
 def _ceil16(x: int) -> int:
     return x + (-x & 15)
 
 
-def _is_literal(expr: str) -> bool:
-    return expr.isdigit()
-
-
 class _Block:
     """Compile-time state of one block being generated."""
 
-    def __init__(self, start: int):
+    def __init__(self, start: int, private: bool):
         self.start = start
+        self.private = private          # the private variant (ahead.py): only the cog's window and read-only longs
         self.lines: list = []           # the body, indented one level
         self.off = 0                    # stack offset (bytes) from the stack pointer at entry
         self.lo = 0                     # lowest and highest stack byte offsets touched
         self.hi = 0
         self.vals: dict = {}            # stack offset -> expression of the long stored there
+        self.pending: dict = {}         # stack offset -> value not stored in hub RAM yet
         self.names = 0
         self.n = 0                      # bytecodes compiled
         self.d = 0                      # the current fetch is at tf + d ...
         self.tf = "tf"                  # ... where tf is this local
-        self.worst = 0                  # latest possible current fetch, from the block's first
-        self.reach = 0                  # latest possible hub access, from the first fetch
+        self.worst = 0                  # latest possible current fetch, from the segment's first
+        self.reach = 0                  # latest possible hub access, from the segment's first fetch
+        self.segments: list = []        # reach of each segment before a WAITCNT's continuation check
         self.t_start = None             # expression: start cycle of the current bytecode
         self.pc = start                 # address of the current bytecode
         self.op_pc = start
         self.op_off = 0                 # stack offset when the current bytecode started
         self.bases: set = set()         # cog fields read into locals at entry
         self.end = False
-        self.private = False            # the private variant (ahead.py): only the cog's own window
+        self.loops = False              # it jumps back to its start without returning
+        self.waits = False              # a WAITCNT continues the block
         self.dlo = 1 << 30              # lowest and highest local-variable byte offsets touched (from dbase)
         self.dhi = -(1 << 30)
+        self.loc_writes: set = set()    # local-variable offsets written (watch bits checked at entry)
         self.var_reads: set = set()     # offsets (from vbase) of the hub variables it reads
+        self.ro: set = set()            # (base local or None, offset): hub longs a private variant reads
 
     def snapshot(self) -> dict:
         state = dict(self.__dict__)
         state["lines"] = len(self.lines)
-        state["vals"] = dict(self.vals)
-        state["bases"] = set(self.bases)
+        for k in ("vals", "pending", "segments"):
+            state[k] = type(self.__dict__[k])(self.__dict__[k])
+        for k in ("bases", "loc_writes", "var_reads", "ro"):
+            state[k] = set(self.__dict__[k])
         return state
 
     def restore(self, state: dict) -> None:
@@ -171,6 +156,7 @@ class _Block:
 
     def loc(self, off: int, size: int = 4) -> None:
         """The block touches the bytes ``[dbase + off, dbase + off + size)``."""
+        self.base("dbase")
         self.dlo = min(self.dlo, off)
         self.dhi = max(self.dhi, off + size)
 
@@ -184,11 +170,18 @@ class _Block:
         return v
 
     def write(self, off: int, expr: str) -> str:
+        """Stack slot ``off`` holds ``expr`` from now on (stored in hub RAM at the next :meth:`flush`)."""
         v = self.let(expr)
         self.touch(off)
-        self.emit(f"{self.slot(off)} = {v}")
         self.vals[off] = v
+        self.pending[off] = v
         return v
+
+    def flush(self, indent: int = 0) -> None:
+        """Store the stack slots written since the last flush (before hub RAM may be read there)."""
+        for off in sorted(self.pending):
+            self.emit(f"{self.slot(off)} = {self.pending[off]}", indent)
+        self.pending.clear()
 
     def push(self, expr: str) -> str:
         v = self.write(self.off, expr)
@@ -208,36 +201,43 @@ class _Block:
         return _BASE_LOCALS[field]
 
     def forget(self) -> None:
-        """A write to a computed address may have hit a stack slot: reread them."""
+        """A write to a computed address may have hit a stack slot: reread them (stored before the write)."""
+        assert not self.pending
         self.vals.clear()
 
     def sp_expr(self, off: int = None) -> str:
         off = self.off if off is None else off
         return "sp" if off == 0 else f"sp + {off}" if off > 0 else f"sp - {-off}"
 
-    def exit_lines(self, pc_expr: str, indent: int = 0) -> None:
-        """Write the cog's pc, sp and bytecode count back (before a return)."""
+    def exit_lines(self, pc_expr: str, indent: int = 0, n: int = None) -> None:
+        """Write the cog's pc, sp and bytecode count back (before a return); stores first."""
+        self.flush(indent)
         self.emit(f"c.pc = {pc_expr}", indent)
         self.emit(f"c.sp = {self.sp_expr()}", indent)
-        self.emit(f"c.bytecodes += {self.n + 1}", indent)
+        self.emit(f"c.bytecodes += {_NB}{self.n + 1 if n is None else n}", indent)
 
-    def deopt(self, cond: str) -> None:
-        """Leave the block before the current bytecode when ``cond`` holds."""
-        if self.n == 0:
-            self.emit(f"if {cond}: return -1")
-            return
+    def deopt(self, cond: str, want: str = None) -> None:
+        """Leave the block before the current bytecode when ``cond`` holds.
+
+        ``want``: an address the run loop should make read-only (private variants).
+        """
+        self.flush()
         self.emit(f"if {cond}:")
+        if want:
+            self.emit(f"WANT[0] = {want}", 1)
+        if self.n == 0:                 # nothing done yet, unless on a later pass of a loop
+            self.emit(_FIRST_EXIT, 1)
         self.emit(f"c.pc = {self.op_pc}", 1)
         self.emit(f"c.sp = {self.sp_expr(self.op_off)}", 1)
-        self.emit(f"c.bytecodes += {self.n}", 1)
-        self.emit(f"return -2 - ({self.t_start})", 1)
+        self.emit(f"c.bytecodes += {_NB}{self.n}", 1)
+        self.emit(f"return -2 - ({self.t_start if self.n else 't0'})", 1)
 
     def now(self, extra: int = 0) -> str:
         d = self.d + extra
         return self.tf if d == 0 else f"{self.tf} + {d}"
 
 
-class BlockCompiler:
+class BlockCompiler(DataOps):
     """Compiles blocks for one chip.
 
     Args:
@@ -259,7 +259,8 @@ class BlockCompiler:
         self.env = {
             "L": chip.mem_longs, "W": chip.mem_words, "mem": chip.mem, "WATCH": chip.watch,
             "B": table, "STUB": stub, "RF": random_forward, "RR": random_reverse,
-            "P": chip._pblocks, "PSTUB": chip._pstub, "CLAIM": CLAIM, "AH": chip._ahead,
+            "P": chip._pblocks, "PSTUB": chip._pstub, "CLAIM": CLAIM, "WANT_RO": WANT_RO,
+            "AH": chip._ahead, "WANT": chip._want,
         }
         for f, fn in enumerate(BINARY):
             if fn is not None:
@@ -280,15 +281,15 @@ class BlockCompiler:
         """The private variant of the block at ``pc`` (ahead.py), or ``None``.
 
         It holds the bytecodes from ``pc`` on that touch only the cog's code,
-        stack and local variables, checks at entry that those lie in the
-        cog's window (returning ``ahead.CLAIM`` if not) and leaves before a
-        local array element outside it; it runs whatever the other cogs do.
+        stack, local variables and read-only hub longs, checks at entry that
+        those lie in the cog's window (returning ``ahead.CLAIM`` if not) or
+        are read-only (``ahead.WANT_RO``), and leaves before a computed
+        address that is neither; it runs whatever the other cogs do.
         """
         return self._compile(pc, True)
 
     def _compile(self, pc: int, private: bool):
-        b = _Block(pc)
-        b.private = private
+        b = _Block(pc, private)
         while True:
             if b.pc >= 0xFFF0 or b.n >= MAX_OPS or (b.n and b.pc in self.boundaries):
                 break
@@ -305,9 +306,7 @@ class BlockCompiler:
         if b.n == 0 or not self._code_free(b.start, b.pc, private):
             return None
         if not b.end:
-            b.emit(f"c.pc = {b.pc}")
-            b.emit(f"c.sp = {b.sp_expr()}")
-            b.emit(f"c.bytecodes += {b.n}")
+            b.exit_lines(str(b.pc), n=b.n)
             b.emit(f"return {b.t_start}")
         return self._finish(b)
 
@@ -316,7 +315,7 @@ class BlockCompiler:
         an exact one not while that cog is ahead: the fetch must be seen by the guarded interpreter)."""
         own = self.chip.own
         k0, k1 = start >> 2, ((end - 1) >> 2) + 1
-        if own.count(0, k0, k1) + own.count(0xFF, k0, k1) == k1 - k0:
+        if all(own[k] == 0 or own[k] > 8 for k in range(k0, k1)):
             return True
         if private:
             return False
@@ -332,79 +331,89 @@ class BlockCompiler:
         if pc in self.boundaries:
             return
         self.boundaries.add(pc)
-        for start, end in list(self.compiled.items()):
-            if start < pc < end:
-                self.table[start] = self.env["STUB"]
-                del self.compiled[start]
-        for start, end in list(self.compiled_private.items()):
-            if start < pc < end:
-                self.chip._pblocks[start] = self.chip._pstub
-                del self.compiled_private[start]
+        for compiled, table, stub in ((self.compiled, self.table, self.env["STUB"]),
+                                      (self.compiled_private, self.chip._pblocks, self.chip._pstub)):
+            for start, (end, loops) in list(compiled.items()):
+                if start < pc < end or (start == pc and loops):
+                    table[start] = stub
+                    del compiled[start]
 
     # ------------------------------------------------------------------ assembly
     def _finish(self, b: _Block):
         start, end = b.start, b.pc
         code = bytes(self.mem[start:end])
-        if b.private:
-            head = ["def blk(c, tf, limit):",
-                    f"    if tf + {b.reach} >= limit: return -1",
-                    f"    if mem[{start}:{end}] != K: P[{start}] = PSTUB; return -1",
-                    "    sp = c.sp"]
-        else:
-            head = ["def blk(c, tf, limit):",
-                    f"    if tf + {b.reach} >= limit: return -1",
-                    f"    if mem[{start}:{end}] != K: B[{start}] = STUB; return -1",
-                    "    sp = c.sp"]
+        table, stub = ("P", "PSTUB") if b.private else ("B", "STUB")
+        head = ["def blk(c, tf, limit):",
+                f"    if tf + {b.segments[0] if b.segments else b.reach} >= limit: return -1",
+                f"    if mem[{start}:{end}] != K: {table}[{start}] = {stub}; return -1",
+                "    sp = c.sp"]
         # the stack bytes the block touches must be in hub RAM and away from its own code
         lo, hi = b.lo, b.hi
         head.append(f"    if sp & 3 or sp < {max(-lo, end - lo)} or sp > {0x10000 - hi}:")
         head.append(f"        if sp & 3 or sp < {-lo} or sp > {min(0x10000 - hi, start - hi)}: return -1")
         head.append("    i = sp >> 2")
-        if b.dlo < b.dhi:
-            b.bases.add("dbase")
         for field in sorted(b.bases):
             head.append(f"    {_BASE_LOCALS[field]} = c.{field}")
-        if not b.private:
+        locs = b.dlo < b.dhi
+        if locs:
+            head.append("    if db & 3: return -1")
+            if lo < hi:         # (lazy stack stores: no local variable may lie in the stack slots)
+                head.append(f"    if db + {b.dhi} > sp + ({lo}) and sp + {hi} > db + ({b.dlo}): return -1")
+        if b.private:
+            # everything it touches lies in the cog's window, everything else it reads is read-only
+            head += ["    wl = c.wlo", "    wh = c.whi"]
+            inside = []
+            if lo < hi:
+                inside += [f"sp + ({lo}) < wl", f"sp + {hi} > wh"]
+            if locs:
+                inside += [f"db + ({b.dlo}) < wl", f"db + {b.dhi} > wh"]
+            if inside:
+                head.append(f"    if {' or '.join(inside)}: return CLAIM")
+            if b.ro:
+                longs = " & ".join(f"WATCH[(({base} + {off}) & 0xFFFF) >> 2]" if base else f"WATCH[{off >> 2}]"
+                                   for base, off in sorted(b.ro, key=str))
+                head.append(f"    if not {longs} & {RO}: return WANT_RO")
+        else:
+            if b.loc_writes:    # a watched local (a parked loop reads it): the interpreter writes it
+                longs = " | ".join(f"WATCH[(db + {off}) >> 2]" for off in sorted(b.loc_writes))
+                head.append(f"    if {longs}: return -1")
             # while a cog is ahead (ahead.py) nothing here may touch its window: the stack and
             # locals must lie in this cog's own window, the hub variables read outside any window
             inside = []
             if lo < hi:
                 inside += [f"sp + ({lo}) < c.wlo", f"sp + {hi} > c.whi"]
-            if b.dlo < b.dhi:
-                inside += ["db & 3", f"db + ({b.dlo}) < c.wlo", f"db + {b.dhi} > c.whi"]
+            if locs:
+                inside += [f"db + ({b.dlo}) < c.wlo", f"db + {b.dhi} > c.whi"]
             if inside:
                 head.append(f"    if AH and ({' or '.join(inside)}): return CLAIM")
             if b.var_reads:
                 longs = " | ".join(f"WATCH[((vb + {off}) & 0xFFFF) >> 2]" for off in sorted(b.var_reads))
                 head.append(f"    if AH and ({longs}) & {AHEAD}: return -1")
-        if b.private:
-            # everything the block touches must lie in the cog's window
-            head += ["    wl = c.wlo", "    wh = c.whi"]
-            inside = []
-            if lo < hi:
-                inside += [f"sp + ({lo}) < wl", f"sp + {hi} > wh"]
-            if b.dlo < b.dhi:
-                head.append("    if db & 3: return -1")
-                inside += [f"db + ({b.dlo}) < wl", f"db + {b.dhi} > wh"]
-            if inside:
-                head.append(f"    if {' or '.join(inside)}: return CLAIM")
-        src = "\n".join(head + b.lines) + "\n"
+        if b.waits:
+            head.append("    ph = tf & 15")
+        body = b.lines
+        if b.loops:
+            head += ["    nb = 0", "    while True:"]
+            body = ["    " + line for line in body]
+        src = "\n".join(head + body) + "\n"
+        src = src.replace(_NB, "nb + " if b.loops else "")
+        src = src.replace(_FIRST_EXIT, "if not nb: return -1" if b.loops else "return -1")
+        for k, reach in enumerate(b.segments):
+            src = src.replace(f"@REACH{k}@", str(reach))
+        src = src.replace(f"@REACH{len(b.segments)}@", str(b.reach))
         ns: dict = {}
         env = dict(self.env)
         env["K"] = code
         exec(compile(src, f"<spin {'private ' if b.private else ''}block ${start:04X}>", "exec"), env, ns)
         fn = ns["blk"]
         fn.source = src
-        fn.reach = b.reach
         fn.foot = (lo, hi, b.dlo, b.dhi)
-        if b.private:
-            self.compiled_private[start] = end
-        else:
-            self.compiled[start] = end
+        fn.ro = tuple(b.ro)
+        (self.compiled_private if b.private else self.compiled)[start] = (end, b.loops)
         watch = self.chip.watch
         own = self.chip.own
         for k in range(start >> 2, ((end - 1) >> 2) + 1):
-            if own[k]:
+            if 1 <= own[k] <= 8:
                 self.chip._share(k)         # code in a window (never with the cog ahead: see _code_free)
             watch[k] |= CODE
         self.count += 1
@@ -495,261 +504,34 @@ class BlockCompiler:
             return self._waitcnt(b, op)
         raise _Stop
 
-    def _math(self, b: _Block, op: int) -> None:
-        f = op & 0x1F
-        table = self.T._math[f]
-        if UNARY[f] is not None:
-            x = b.pop()
-            y = "0"
-            if _is_literal(x):
-                new = str(UNARY[f](int(x)))
-            elif f in _UNARY_EXPR:
-                new = _UNARY_EXPR[f].format(x=x)
-            else:
-                new = f"U{f:02X}({x})"
-        else:
-            y = b.pop()
-            x = b.pop()
-            if _is_literal(x) and _is_literal(y):
-                new = str(BINARY[f](int(x), int(y)))
-            elif f in _BINARY_EXPR:
-                new = _BINARY_EXPR[f].format(x=x, y=y)
-            else:
-                new = f"B{f:02X}({x}, {y})"
-        b.push(new)
-        self._account(b, op, *self._math_rest(f, table, x, y, 0))
+    # -- control flow (the block ends, or goes round again)
+    def _taken(self, b: _Block, target: int, rest: int, off: int, indent: int) -> None:
+        """The jump to ``target`` (stack at ``off``) whose bytecode takes ``rest``: exit, or loop to the start."""
+        if target == b.start and off == 0 and b.start not in self.boundaries:
+            b.loops = True
+            b.emit(f"t0 = {b.now(rest)}", indent)           # the next pass's first bytecode starts here
+            b.emit(f"nb += {b.n + 1}", indent)
+            b.emit(f"tf = {b.tf} + {b.d + _ceil16(rest + 12)}", indent)
+            b.emit("if tf + @REACH0@ < limit: continue", indent)
+            b.emit(f"c.pc = {target}", indent)
+            b.emit(f"c.sp = {b.sp_expr(off)}", indent)
+            b.emit("c.bytecodes += nb", indent)
+            b.emit("return t0", indent)
+            return
+        keep = b.off
+        b.off = off
+        b.exit_lines(str(target), indent)
+        b.off = keep
+        b.emit(f"return {b.now(rest)}", indent)
 
-    def _math_rest(self, f: int, table, x: str, y: str, base: int):
-        """The cycles of math operator ``f`` on operands ``x``, ``y``: ``(rest,)`` or ``(expr, worst)``."""
-        if len(set(table)) == 1:
-            return (base + table[0],)
-        if (_is_literal(x) or f != 0x11) and (_is_literal(y) or f == 0x11):
-            from .timing import math_param
-            return (base + table[math_param(0xE0 | f, int(x) if _is_literal(x) else 0,
-                                             int(y) if _is_literal(y) else 0)],)
-        return (f"{base} + MT{f:02X}[{_PARAM_EXPR[f].format(x=x, y=y)}]", base + max(table))
-
-    # -- VAR / LOC longs ($40-$7F)
-    def _var(self, b: _Block, op: int) -> None:
-        off = op & 0x1C
-        local = bool(op & 0x20)
-        if b.private and not local:
-            raise _Stop                         # a hub variable: shared
-        base = b.base("dbase" if local else "vbase")
-        access = op & 3
-        T = self.T
-        addr = f"({base} + {off}) & 0xFFFF"
-        if access == 3:
-            b.push(addr)
-            return self._account(b, op, T.var[op])
-        if local:
-            b.loc(off)
-        if access == 0:
-            if not local:
-                b.var_reads.add(off)
-            b.push(f"L[(({base} + {off}) & 0xFFFF) >> 2]")
-            return self._account(b, op, T.var[op])
-        a = b.let(addr)
-        if not b.private:                       # (a window holds no watched long)
-            b.deopt(f"{a} < 0x8000 and WATCH[{a} >> 2]")
-        if access == 1:
-            v = b.pop()
-            b.emit(f"if {a} < 0x8000: L[{a} >> 2] = {v}")
-            b.forget()
-            return self._account(b, op, T.var[op])
-        old = b.let(f"L[{a} >> 2]")
-        aop = self._byte(b)
-        res = self._assign(b, aop, old, op, T.var_using[bool(op & 0x20)])
-        new = res[0]
-        b.emit(f"if {a} < 0x8000: L[{a} >> 2] = {new}")
-        b.forget()
-        self._assign_close(b, op, res)
-
-    # -- memory ($80-$DF)
-    def _mem(self, b: _Block, op: int) -> None:
-        size = (op >> 5) & 3
-        base = (op >> 2) & 3
-        indexed = op & 0x10
-        access = op & 3
-        T = self.T
-        if base:
-            x = self._byte(b)
-            long_ = bool(x & 0x80)
-            off = ((x & 0x7F) << 8) | self._byte(b) if long_ else x
-            reg = b.base(("pbase", "vbase", "dbase")[base - 1])
-            expr = f"{off} + {reg}"
-            if indexed:
-                k = b.pop()
-                expr = f"{expr} + ({k} << {size})" if size else f"{expr} + {k}"
-        else:
-            long_ = False
-            if indexed:
-                k = b.pop()
-                p = b.pop()
-                expr = f"{p} + ({k} << {size})" if size else f"{p} + {k}"
-            else:
-                expr = b.pop()
-        rest = (T.mem_using if access == 2 else T.mem)[(op, long_)]
-        a = b.let(f"({expr}) & 0xFFFFFFFF") if (indexed or base) else expr
-        if access == 3:
-            b.push(a)
-            return self._account(b, op, rest)
-        if b.private:                           # only the cog's locals: static, or checked against the window
-            if base in (1, 2):
-                raise _Stop
-            if base == 3 and not indexed:
-                b.loc(off & ~3)
-                w = b.let(f"{a} & 0xFFFF")
-            else:
-                w = b.let(f"{a} & 0xFFFF")
-                b.deopt(f"not wl <= {w} < wh")
-        elif base == 3 and not indexed:
-            b.loc(off & ~3)
-        if access == 0:
-            if not b.private and not (base == 3 and not indexed):   # not in the window of a cog ahead
-                b.deopt(f"AH and WATCH[({a} & 0xFFFF) >> 2] & {AHEAD}")
-            b.push(self._sized_read(size, a))
-            return self._account(b, op, rest)
-        if not b.private:                       # writes: leave the block first if the long is watched
-            w = b.let(f"{a} & 0xFFFF")
-            b.deopt(f"{w} < 0x8000 and WATCH[{w} >> 2]")
-        if access == 1:
-            v = b.pop()
-            b.emit(f"if {w} < 0x8000: {self._sized_store(size, w, v)}")
-            b.forget()
-            return self._account(b, op, rest)
-        old = b.let(self._sized_read(size, a))
-        aop = self._byte(b)
-        res = self._assign(b, aop, old, op, rest)
-        b.emit(f"if {w} < 0x8000: {self._sized_store(size, w, res[0])}")
-        b.forget()
-        self._assign_close(b, op, res)
-
-    @staticmethod
-    def _sized_read(size: int, a: str) -> str:
-        if size == 0:
-            return f"mem[{a} & 0xFFFF]"
-        if size == 1:
-            return f"W[({a} & 0xFFFE) >> 1]"
-        return f"L[({a} & 0xFFFC) >> 2]"
-
-    @staticmethod
-    def _sized_store(size: int, w: str, v: str) -> str:
-        if size == 0:
-            return f"mem[{w}] = {v} & 0xFF"
-        if size == 1:
-            return f"W[{w} >> 1] = {v} & 0xFFFF"
-        return f"L[{w} >> 2] = {v} & 0xFFFFFFFF"
-
-    # -- assignment operators (the interpreter's spin._assign, for hub targets)
-    def _assign(self, b: _Block, a: int, v: str, op: int, base_rest: int):
-        """Generate assignment operator ``a`` on target value ``v``.
-
-        Returns ``(new, rest...)``: the expression to store, then either
-        ``(rest,)``, ``(expr, worst)`` or, for REPEAT, the loop's exits.
-        """
-        T = self.T
-        tab = T.assign_mem
-        push_it = a & 0x80
-        c = a & 0x7F
-        if c == 0:                                      # WRITE: the value is on the stack
-            new = b.peek()
-            if not push_it:
-                b.off -= 4
-            return new, base_rest + tab[a]
-        b.write(b.off, v)
-        if c & 0x40:
-            if c & 0x20:
-                raise _Stop
-            f = c & 0x1F
-            table = T._math[f]
-            ref = table[MATH_REF.get(0xE0 | f, 0)]
-            fixed = T._math_assign[(False, f, push_it != 0)] - ref + base_rest
-            if UNARY[f] is not None:
-                expr = _UNARY_EXPR[f].format(x=v) if f in _UNARY_EXPR else f"U{f:02X}({v})"
-                new = b.write(b.off, expr)
-                if push_it:
-                    b.off += 4
-                return (new,) + self._math_rest(f, table, v, "0", fixed)
-            y = b.read(b.off - 4)
-            expr = _BINARY_EXPR[f].format(x=v, y=y) if f in _BINARY_EXPR else f"B{f:02X}({v}, {y})"
-            new = b.write(b.off - 4, expr)
-            if not push_it:
-                b.off -= 4
-            return (new,) + self._math_rest(f, table, v, y, fixed)
-        if c == 0x02 or c == 0x06:
-            return self._repeat(b, a, v, op, base_rest)
-        if c == 0x08:
-            new = f"RF({v})"
-        elif c == 0x0C:
-            new = f"RR({v})"
-        elif c == 0x10:
-            new = f"(({v} & 0xFF) - (({v} & 0x80) << 1)) & 0xFFFFFFFF"
-        elif c == 0x14:
-            new = f"(({v} & 0xFFFF) - (({v} & 0x8000) << 1)) & 0xFFFFFFFF"
-        elif c == 0x18:
-            new = None
-        elif c == 0x1C:
-            new = None
-        elif 0x20 <= c < 0x40 and not c & 1:
-            m = (MASK32, 0xFF, 0xFFFF, MASK32)[(c >> 1) & 3]
-            new = b.let(f"({v} {'+' if c < 0x30 else '-'} 1) & {m:#x}")
-            if c & 0x08:                                # post: the old value stays on the stack
-                if push_it:
-                    b.off += 4
-                return new, base_rest + tab[a]
-        else:
-            raise _Stop
-        if new is None:                                 # x~ / x~~: old value stays on the stack
-            new = "0" if c == 0x18 else "4294967295"
-        else:
-            new = b.write(b.off, new)
-        if push_it:
-            b.off += 4
-        return new, base_rest + tab[a]
-
-    def _assign_close(self, b: _Block, op: int, res) -> None:
-        if len(res) == 4:                               # REPEAT: a conditional jump
-            return self._branch(b, op, res[1], res[2], res[3])
-        self._account(b, op, *res[1:])
-
-    def _repeat(self, b: _Block, a: int, v: str, op: int, base_rest: int):
-        step_ = (a & 0x7F) == 0x06
-        to = b.read(b.off - 4)
-        frm = b.read(b.off - 8)
-        if step_:
-            step = b.read(b.off - 12)
-            b.off -= 12
-        else:
-            step = "1"
-            b.off -= 8
-        target, long_ = self._jump_target(b, wrap=True)
-        s = lambda e: e if _is_literal(e) and int(e) < 0x80000000 else f"({e} ^ 0x80000000) - 0x80000000"
-        x = b.name()
-        f_, t_ = s(frm), s(to)
-        b.emit(f"{x} = {s(v)}")
-        inside = b.name("ins")
-        b.emit(f"if {f_} <= {t_}:")
-        b.emit(f"{x} += {s(step)}", 1)
-        b.emit(f"{inside} = {f_} <= {x} <= {t_}", 1)
-        b.emit("else:")
-        b.emit(f"{x} -= {s(step)}", 1)
-        b.emit(f"{inside} = {t_} <= {x} <= {f_}", 1)
-        new = b.let(f"{x} & 0xFFFFFFFF")
-        T = self.T
-        taken = base_rest + T.repeat[(False, step_, True, long_)]
-        not_taken = base_rest + T.repeat[(False, step_, False, long_)]
-        return new, inside, (target, taken), (b.pc, not_taken)
-
-    # -- control flow (the block ends)
-    def _branch(self, b: _Block, op: int, cond: str, yes, no) -> None:
+    def _branch(self, b: _Block, op: int, cond: str, yes, no, yes_off: int = None, no_off: int = None) -> None:
         """End the block: go to ``yes = (pc, rest)`` if ``cond`` holds, else to ``no``."""
         self._terminal_rest(b, op)
+        b.flush()
+        off = b.off
         b.emit(f"if {cond}:")
-        b.exit_lines(str(yes[0]), 1)
-        b.emit(f"return {b.now(yes[1])}", 1)
-        b.exit_lines(str(no[0]))
-        b.emit(f"return {b.now(no[1])}")
+        self._taken(b, yes[0], yes[1], off if yes_off is None else yes_off, 1)
+        self._taken(b, no[0], no[1], off if no_off is None else no_off, 0)
         b.end = True
 
     def _jump(self, b: _Block, op: int) -> None:
@@ -758,33 +540,23 @@ class BlockCompiler:
         nxt = b.pc
         if op == 0x04:                                  # JMP
             self._terminal_rest(b, op)
-            b.exit_lines(str(target))
-            b.emit(f"return {b.now(T.jmp[long_])}")
+            b.flush()
+            self._taken(b, target, T.jmp[long_], b.off, 0)
             b.end = True
             return
         if op == 0x08:                                  # TJZ: pop only when jumping
             v = b.peek()
-            self._terminal_rest(b, op)
-            b.emit(f"if {v} == 0:")
-            b.off -= 4
-            b.exit_lines(str(target), 1)
-            b.off += 4
-            b.emit(f"return {b.now(T.tjz[(long_, True)])}", 1)
-            b.exit_lines(str(nxt))
-            b.emit(f"return {b.now(T.tjz[(long_, False)])}")
-            b.end = True
-            return
+            return self._branch(b, op, f"{v} == 0", (target, T.tjz[(long_, True)]), (nxt, T.tjz[(long_, False)]),
+                                yes_off=b.off - 4, no_off=b.off)
         if op == 0x09:                                  # DJNZ
             v = b.let(f"({b.peek()} - 1) & 0xFFFFFFFF")
             b.touch(b.off - 4)
             self._terminal_rest(b, op)
+            b.flush()
             b.emit(f"if {v}:")
             b.emit(f"{b.slot(b.off - 4)} = {v}", 1)     # written back only when it loops (0 is not)
-            b.exit_lines(str(target), 1)
-            b.emit(f"return {b.now(T.djnz[(long_, True)])}", 1)
-            b.off -= 4
-            b.exit_lines(str(nxt))
-            b.emit(f"return {b.now(T.djnz[(long_, False)])}")
+            self._taken(b, target, T.djnz[(long_, True)], b.off, 1)
+            self._taken(b, nxt, T.djnz[(long_, False)], b.off - 4, 0)
             b.end = True
             return
         if op in (0x0A, 0x0B):                          # JZ / JNZ
@@ -810,17 +582,33 @@ class BlockCompiler:
                             (nxt, T.case_range[(long_, False)]))
 
     def _waitcnt(self, b: _Block, op: int) -> None:
+        """WAITCNT: the next bytecode starts when the wait ends; the block goes on if the rest still fits."""
         T = self.T
         target = b.pop()
         self._terminal_rest(b, op)
         issue = T.waitcnt_issue + T.waitcnt_min
-        b.exit_lines(str(b.pc))
-        b.emit(f"return {b.now(issue + T.waitcnt_after)} + (({target} - ({b.now(issue)})) & 0xFFFFFFFF)")
-        b.end = True
+        tn = b.name("t")
+        b.emit(f"{tn} = {b.now(issue + T.waitcnt_after)} + (({target} - ({b.now(issue)})) & 0xFFFFFFFF)")
+        b.t_start = tn
+        # the segment after the wait: its fetches are on the hub window from the end of the wait
+        b.waits = True
+        k = len(b.segments)
+        b.segments.append(b.reach)
+        nf = b.name("T")
+        b.emit(f"{nf} = {tn} + 12")
+        b.emit(f"{nf} += (ph - {nf}) & 15")
+        b.flush()
+        b.emit(f"if {nf} + @REACH{k + 1}@ >= limit:")
+        b.emit(f"c.pc = {b.pc}", 1)
+        b.emit(f"c.sp = {b.sp_expr()}", 1)
+        b.emit(f"c.bytecodes += {_NB}{b.n + 1}", 1)
+        b.emit(f"return {tn}", 1)
+        b.tf, b.d, b.worst, b.reach = nf, 0, 0, 0
 
     def _frame(self, b: _Block, op: int) -> None:
         o = b.off
         b.touch(o, 12)
+        b.flush()
         sp = b.sp_expr()
         b.emit(f"s = {sp}")
         b.emit(f"W[s >> 1] = (c.pbase | {op}) & 0xFFFF")
@@ -845,6 +633,7 @@ class BlockCompiler:
         if ret > 0xFFFF:
             raise _Stop
         self._terminal_rest(b, op)
+        b.flush()
         b.emit("pb = c.pbase")
         b.emit("pbh = c.pbase_hi")
         if op == 0x06:
@@ -871,16 +660,15 @@ class BlockCompiler:
         b.emit("c.pc = full & 0xFFFF")
         b.emit("c.pc_hi = (full >> 16) & 0xFFFF")
         b.emit("c.sp = nsp")
-        b.emit(f"c.bytecodes += {b.n + 1}")
+        b.emit(f"c.bytecodes += {_NB}{b.n + 1}")
         b.emit(f"return {b.now(T.call_obj if op == 0x06 else T.call)}")
         b.end = True
 
     def _return(self, b: _Block, op: int) -> None:
         T = self.T
-        b.base("dbase")                         # the frame header and the result long
-        b.loc(-8, 12)
+        b.loc(-8, 12)                           # the frame header and the result long
         self._terminal_rest(b, op)
-        b.emit("d = c.dbase")
+        b.emit("d = db")
         b.deopt("not 8 <= d < 0x10000")
         value = b.pop() if op == 0x33 else b.let("L[d >> 2]")
         b.emit("c.pc = W[(d - 2) >> 1]")
@@ -890,7 +678,7 @@ class BlockCompiler:
         b.emit("flags = W[(d - 8) >> 1]")
         b.emit("c.pbase = flags & 0xFFFC")
         b.emit("c.pbase_hi = 0")
-        b.emit(f"c.bytecodes += {b.n + 1}")
+        b.emit(f"c.bytecodes += {_NB}{b.n + 1}")
         b.emit("if flags & 1:")
         b.emit("c.sp = d - 8", 1)
         b.emit(f"return {b.now(T.returns(op, 1, False))}", 1)

@@ -27,7 +27,7 @@ Skipped bytecodes are counted in the statistics as executed.
 """
 from __future__ import annotations
 
-from .ahead import AHEAD
+from .ahead import _WRITE_CHECKED, AHEAD
 
 __all__ = ["BusyLoop", "LoopMemory", "learn_busy_loop", "IMPURE_OPS", "LEARN_AFTER", "LEARN_HORIZON"]
 
@@ -59,14 +59,17 @@ class _TrackedView:
     def __init__(self, view, shift, log, chip):
         self.view, self.shift, self.log, self.chip, self.watch = view, shift, log, chip, chip.watch
 
-    def _guard(self, i):
+    def _guard(self, i, write=False):
         if isinstance(i, slice):
             start, stop, _ = i.indices(len(self.view))
             if start < stop:
-                self.chip._guard_range(start << self.shift, stop << self.shift)
-        elif self.watch[((i << self.shift) & 0xFFFF) >> 2] & AHEAD:
-            chip = self.chip
-            chip._intrude(chip._g_cog, i << self.shift, chip._g_key)
+                self.chip._guard_range(start << self.shift, stop << self.shift, write)
+        elif self.watch[((i << self.shift) & 0xFFFF) >> 2] & (_WRITE_CHECKED if write else AHEAD):
+            if write:
+                self.chip._guard_write(i << self.shift)
+            else:
+                chip = self.chip
+                chip._intrude(chip._g_cog, i << self.shift, chip._g_key)
 
     def __getitem__(self, i):
         self._guard(i)
@@ -79,7 +82,7 @@ class _TrackedView:
         return v
 
     def __setitem__(self, i, v):
-        self._guard(i)
+        self._guard(i, True)
         self.log.append((1, self.shift, i, self.view[i], v))
         self.view[i] = v
 

@@ -16,7 +16,7 @@ from __future__ import annotations
 from .blocks import BUSY, CODE, BlockCompiler
 from .cog import PARKED, RUNNING, Cog
 from .control import CogStopped, Preempted, RebootRequested, Reschedule
-from .ahead import AHEAD, CLAIM, NOPRIV, SHARED
+from .ahead import AHEAD, CLAIM, NOPRIV, RO, SHARED
 from .fastforward import INTERRUPTED, LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
 
 __all__ = ["Scheduler", "NEVER"]
@@ -277,8 +277,12 @@ class Scheduler:
 
     def watch_hit_at(self, writer: Cog, hub_addr: int, key: int) -> None:
         """:meth:`watch_hit` for a write at cycle ``key`` (a PASM cog's hub window)."""
-        if self._ahead and self.watch[(hub_addr & 0xFFFF) >> 2] & CODE:
-            self._code_write(writer, key)   # the cogs ahead may have run that code after the write
+        k = (hub_addr & 0xFFFF) >> 2
+        w = self.watch[k]
+        if w & RO:
+            self._ro_written(writer, k, key)    # the cogs ahead may have read it after the write
+        elif w & CODE and self._ahead:
+            self._code_write(writer, key)       # ... or run that code
         woke = False
         for p in list(self._parked):
             if any(((i << shift) & 0xFFFF) >> 2 == hub_addr >> 2 for shift, i, _ in p.busy.reads):
