@@ -55,7 +55,7 @@ from __future__ import annotations
 from .cog import RUNNING
 from .control import CogStopped, RebootRequested, Reschedule
 
-__all__ = ["RunAhead", "AHEAD", "RO", "SHARED", "NORO", "CLAIM", "REDO", "WANT_RO", "NOPRIV", "RUN_AHEAD"]
+__all__ = ["RunAhead", "_hole_in", "AHEAD", "RO", "SHARED", "NORO", "CLAIM", "REDO", "WANT_RO", "NOPRIV", "RUN_AHEAD"]
 
 #: ``Chip.watch`` bit: the long is in the window of a cog that is running ahead
 AHEAD = 4
@@ -77,6 +77,24 @@ REDO = CLAIM + 1
 WANT_RO = CLAIM + 2
 #: longs claimed past the footprint when a window grows (fewer claims)
 _SLACK_LONGS = 16
+#: private phases skipped at an address where the last one did nothing
+_SKIP_AFTER_FAIL = 32
+#: ``Cog.cp`` while a rollback runs the cog again (not ahead, but its private blocks open nothing)
+_REPLAY = [0] * 12 + [[]]
+
+
+def _hole_in(holes, a0: int, a1: int, db: int, locs) -> bool:
+    """Does a hole (a hub long index) lie in stack bytes ``[a0, a1)`` or at a local ``db + off``?"""
+    for k in holes:
+        a = k << 2
+        if a0 <= a < a1 or a - db in locs:
+            return True
+    return False
+
+
+def _interpreted(c, tf, limit):
+    """The exact block table's entry where the first bytecode is left to the interpreter."""
+    return -1
 
 
 def _no_private(c, tf, limit):
@@ -116,8 +134,14 @@ class RunAhead:
             self._pstub = None
 
     # ------------------------------------------------------------------ windows
-    def _claim(self, c, a0: int, a1: int) -> bool:
-        """Grow cog ``c``'s window to cover hub bytes ``[a0, a1)``; False if some long there is not claimable."""
+    def _claim(self, c, a0: int, a1: int, touched=None) -> bool:
+        """Grow cog ``c``'s window to cover hub bytes ``[a0, a1)``.
+
+        Every long there that the cog touches (``touched``: long indices; all
+        of them if ``None``) must be claimable; one it does not touch that
+        cannot be claimed (shared, watched) becomes a hole.  Returns False if
+        a touched long is not claimable.
+        """
         k0, k1 = a0 >> 2, (a1 + 3) >> 2
         if k0 < 0 or k1 > 0x2000 or k0 >= k1:
             return False
@@ -126,50 +150,57 @@ class RunAhead:
             lo, hi = k0, k0
         new_lo, new_hi = min(lo, k0), max(hi, k1)
         own, watch = self.own, self.watch
-        # the longs added below and above the window must all be claimable
-        if new_lo < lo and (own.count(0, new_lo, lo) != lo - new_lo or watch.count(0, new_lo, lo) != lo - new_lo):
-            return False
-        if new_hi > hi and (own.count(0, hi, new_hi) != new_hi - hi or watch.count(0, hi, new_hi) != new_hi - hi):
-            return False
+        holes = []
+        for a, b in ((new_lo, lo), (hi, new_hi)):       # the longs added below and above the window
+            if a < b and (own.count(0, a, b) != b - a or watch.count(0, a, b) != b - a):
+                for k in range(a, b):
+                    if own[k] or watch[k]:
+                        if (touched is None or k in touched) or 1 <= own[k] <= 8:
+                            return False
+                        holes.append(k)
         if new_hi > hi:                 # a little room above, as far as it is free
             top = min(new_hi + _SLACK_LONGS, 0x2000)
             while new_hi < top and not own[new_hi] and not watch[new_hi]:
                 new_hi += 1
         me = c.id + 1
         cp = c.cp
+        if cp is _REPLAY:
+            cp = None
         mem = self.mem
         for a, b in ((new_lo, lo), (hi, new_hi)):
             if a < b:
+                keep = [(k, own[k]) for k in holes if a <= k < b]
                 own[a:b] = bytes([me]) * (b - a)
+                for k, o in keep:
+                    own[k] = o
                 if cp is not None:          # ahead: saved as they are now, and watched
                     cp[12].append((a << 2, bytes(mem[a << 2: b << 2])))
+                    wkeep = [(k, watch[k]) for k in holes if a <= k < b]
                     watch[a:b] = bytes([AHEAD]) * (b - a)
+                    for k, w in wkeep:
+                        watch[k] = w
+        c.holes.extend(holes)
         c.wlo, c.whi = new_lo << 2, new_hi << 2
         return True
 
     def _claim_for(self, c, fn) -> bool:
-        """Claim the footprint of private block ``fn`` at cog ``c``'s present stack pointer and frame."""
+        """Claim the footprint of block ``fn`` at cog ``c``'s present stack pointer and frame."""
         lo, hi, dlo, dhi = fn.foot
         a0, a1 = 1 << 30, -(1 << 30)
+        touched = set()
         if lo < hi:
             a0, a1 = c.sp + lo, c.sp + hi
+            touched.update(range(a0 >> 2, (a1 + 3) >> 2))
         if dlo < dhi:
             db = c.dbase
             a0, a1 = min(a0, db + dlo), max(a1, db + dhi)
-        return a0 < a1 and self._claim(c, a0, a1)
+            touched.update((db + off) >> 2 for off in fn.locs)
+        return a0 < a1 and self._claim(c, a0, a1, touched)
 
     def _release(self, c, k: int) -> None:
-        """Take hub long ``k`` out of cog ``c``'s window for good (another cog touches it)."""
-        lo, hi = c.wlo >> 2, c.whi >> 2
-        if lo <= k < hi:
-            if (k << 2) < c.sp:                 # keep the part the stack grows in
-                drop_lo, drop_hi, lo = lo, k, k + 1
-            else:
-                drop_lo, drop_hi, hi = k + 1, hi, k
-            self.own[drop_lo:drop_hi] = bytes(drop_hi - drop_lo)
-            if lo >= hi:
-                lo = hi = 0
-            c.wlo, c.whi = lo << 2, hi << 2
+        """Take hub long ``k`` out of cog ``c``'s window for good (another cog touches it): a hole in it."""
+        if c.wlo >> 2 <= k < c.whi >> 2 and k not in c.holes:
+            c.holes.append(k)
         self.own[k] = SHARED
 
     def _release_window(self, c) -> None:
@@ -179,7 +210,20 @@ class RunAhead:
         lo, hi = c.wlo >> 2, c.whi >> 2
         if lo < hi:
             self.own[lo:hi] = bytes(hi - lo)
+        for k in c.holes:
+            self.own[k] = SHARED
+        c.holes = []
         c.wlo = c.whi = 0
+
+    def _mark(self, c, bits: int) -> None:
+        """Set the watch bits of cog ``c``'s window to ``bits`` (AHEAD or 0), its holes left as they are."""
+        lo, hi = c.wlo >> 2, c.whi >> 2
+        if lo < hi:
+            watch = self.watch
+            keep = [(k, watch[k]) for k in c.holes]
+            watch[lo:hi] = bytes([bits]) * (hi - lo)
+            for k, w in keep:
+                watch[k] = w
 
     def _make_ro(self, k: int) -> bool:
         """Let private blocks read hub long ``k`` from now on (a write to it will roll back every cog ahead)."""
@@ -191,10 +235,13 @@ class RunAhead:
         self.watch[k] |= RO
         return True
 
+    @staticmethod
+    def _base(c, base) -> int:
+        return c.vbase if base == "vb" else c.pbase if base == "pb" else c.dbase if base == "db" else 0
+
     def _want_ro(self, c, fn) -> bool:
         """Make read-only the hub longs private block ``fn`` reads at cog ``c``'s present bases."""
-        bases = {"vb": c.vbase, "pb": c.pbase, "db": c.dbase, None: 0}
-        return all(self._make_ro(((bases[base] + off) & 0xFFFF) >> 2) for base, off in fn.ro)
+        return all(self._make_ro(((self._base(c, base) + off) & 0xFFFF) >> 2) for base, off in fn.ro)
 
     def _ro_written(self, b, k: int, key: int) -> None:
         """Cog ``b`` writes read-only hub long ``k`` at ``key``: the cogs ahead may have read it later."""
@@ -222,16 +269,21 @@ class RunAhead:
         lo, hi = c.wlo, c.whi
         c.cp = [c.t, c.pc, c.pc_hi, c.sp, c.dbase, c.vbase, c.pbase, c.pbase_hi, c.dcall, c.bytecodes,
                 lo, bytes(self.mem[lo:hi]), []]
-        if lo < hi:
+        if c.holes:
+            self._mark(c, AHEAD)
+        elif lo < hi:
             self.watch[lo >> 2: hi >> 2] = bytes([AHEAD]) * ((hi - lo) >> 2)
         self._ahead.append(c)
         self._stretches += 1
 
     def _close(self, c) -> None:
         """Nothing can reach into cog ``c``'s past any more: forget its checkpoint."""
-        lo, hi = c.wlo >> 2, c.whi >> 2
-        if lo < hi:
-            self.watch[lo:hi] = bytes(hi - lo)
+        if c.holes:
+            self._mark(c, 0)
+        else:
+            lo, hi = c.wlo >> 2, c.whi >> 2
+            if lo < hi:
+                self.watch[lo:hi] = bytes(hi - lo)
         c.cp = None
         self._ahead.remove(c)
 
@@ -239,14 +291,21 @@ class RunAhead:
         """Bring cog ``c`` (ahead) back to where the exact order has it when cog ``by_id``'s access at ``key`` runs."""
         cp = c.cp
         (c.t, c.pc, c.pc_hi, c.sp, c.dbase, c.vbase, c.pbase, c.pbase_hi, c.dcall, c.bytecodes) = cp[:10]
-        mem = self.mem
+        mem, L = self.mem, self.mem_longs
         lo, data = cp[10], cp[11]
+        keep = [(k, L[k]) for k in c.holes]     # (other cogs write the holes)
         mem[lo: lo + len(data)] = data
         for a, data in cp[12]:
             mem[a: a + len(data)] = data
+        for k, v in keep:
+            L[k] = v
         self._close(c)
         self._rollbacks += 1
-        self._replay(c, key + 1 if c.id < by_id else key)
+        c.cp = _REPLAY                      # (its private blocks must not open a stretch while replayed)
+        try:
+            self._replay(c, key + 1 if c.id < by_id else key)
+        finally:
+            c.cp = None
 
     def _replay(self, c, limit: int) -> None:
         """Run cog ``c``'s private bytecodes again, in the exact order's way, while they start before ``limit``.
@@ -338,19 +397,21 @@ class RunAhead:
         t = c.t
         pc = c.pc
         moved = False
-        opened = False
         claimed = -1
         want = self._want
+        if pc == c.pfail:                       # it did nothing here last time: not every time again
+            if c.pfail_n:
+                c.pfail_n -= 1
+                return False
+            c.pfail = -1
+        opened = c.cp is None                   # (a private block opens the stretch when it starts)
         while 0 <= pc < 0x10000:
             tf = t + 12
             tf += (ph - tf) & 15
             f = P[pc]
             if f is NOPRIV:
                 break
-            if c.cp is None:                    # from here on it may run past limit
-                c.t = t
-                self._open(c)
-                opened = True
+            c.t = t
             r = f(c, tf, bound)
             if r >= 0:
                 t = r
@@ -362,10 +423,12 @@ class RunAhead:
             if r == REDO:
                 continue
             if r == CLAIM or r == WANT_RO:
-                c.t = t
                 if claimed != pc and (self._claim_for(c, f) if r == CLAIM else self._want_ro(c, f)):
                     claimed = pc
                     continue
+                if r == WANT_RO and any(self.own[((self._base(c, base) + off) & 0xFFFF) >> 2] == NORO
+                                        for base, off in f.ro):
+                    P[pc] = NOPRIV              # it reads a long that is written: never private
                 break
             if r != -1:                         # it stopped before a bytecode that is not private
                 t = -2 - r
@@ -379,8 +442,10 @@ class RunAhead:
             break
         want[0] = -1
         c.t = t
-        if opened and not moved:
-            self._close(c)
+        if not moved:
+            if opened and c.cp is not None:
+                self._close(c)
+            c.pfail, c.pfail_n = c.pc, _SKIP_AFTER_FAIL
         return moved
 
     def _make_private_stub(self):
@@ -397,6 +462,13 @@ class RunAhead:
             if chip._compiler is None:
                 from .blocks import BlockCompiler
                 chip._compiler = BlockCompiler(chip, chip._blocks, chip._block_stub)
+            exact = chip._blocks[pc]
+            if exact == chip._block_stub:       # the exact block tells whether a private one is worth it
+                exact = chip._compiler.compile(pc)
+                chip._blocks[pc] = exact if exact is not None else _interpreted
+            if not getattr(exact, "privatable", False):
+                chip._pblocks[pc] = NOPRIV
+                return -1
             fn = chip._compiler.compile_private(pc) if heat < HOT + 8 else None
             chip._heat[pc] = min(heat + 1, 255)
             chip._pblocks[pc] = fn if fn is not None else NOPRIV

@@ -109,8 +109,10 @@ class DataOps:
         off = op & 0x1C
         local = bool(op & 0x20)
         access = op & 3
-        if b.private and not local and access in (1, 2):
-            raise _Stop                         # a write to a hub variable: shared
+        if not local and access in (1, 2):
+            if b.private:
+                raise _Stop                     # a write to a hub variable: shared
+            b.shared = True
         base = b.base("dbase" if local else "vbase")
         T = self.T
         addr = f"({base} + {off}) & 0xFFFF"
@@ -181,6 +183,8 @@ class DataOps:
             b.push(a)
             return self._account(b, op, rest)
         local = base == 3 and not indexed       # a local variable: the frame, checked at entry
+        if access and not local:
+            b.shared = True                     # (a private variant checks that it is in the window)
         fixed = (base and not indexed) or (not base and not indexed and _is_literal(expr))
         if local:
             b.loc(off & ~3)

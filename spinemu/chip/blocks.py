@@ -58,7 +58,7 @@ read-only longs must be claimed first.
 """
 from __future__ import annotations
 
-from .ahead import AHEAD, CLAIM, RO, WANT_RO
+from .ahead import AHEAD, CLAIM, RO, WANT_RO, _hole_in
 from .blockops import BUSY, CODE, DataOps, _Stop, _is_literal
 from .mathops import BINARY, MASK32, UNARY
 from .spin import random_forward, random_reverse
@@ -110,16 +110,18 @@ class _Block:
         self.waits = False              # a WAITCNT continues the block
         self.dlo = 1 << 30              # lowest and highest local-variable byte offsets touched (from dbase)
         self.dhi = -(1 << 30)
+        self.locs: set = set()          # local-variable long offsets touched (from dbase)
         self.loc_writes: set = set()    # local-variable offsets written (watch bits checked at entry)
         self.var_reads: set = set()     # offsets (from vbase) of the hub variables it reads
         self.ro: set = set()            # (base local or None, offset): hub longs a private variant reads
+        self.shared = False             # it writes hub RAM outside the stack and locals, or calls (no private variant)
 
     def snapshot(self) -> dict:
         state = dict(self.__dict__)
         state["lines"] = len(self.lines)
         for k in ("vals", "pending", "segments"):
             state[k] = type(self.__dict__[k])(self.__dict__[k])
-        for k in ("bases", "loc_writes", "var_reads", "ro"):
+        for k in ("bases", "locs", "loc_writes", "var_reads", "ro"):
             state[k] = set(self.__dict__[k])
         return state
 
@@ -155,10 +157,11 @@ class _Block:
         self.hi = max(self.hi, off + size)
 
     def loc(self, off: int, size: int = 4) -> None:
-        """The block touches the bytes ``[dbase + off, dbase + off + size)``."""
+        """The block touches the bytes ``[dbase + off, dbase + off + size)`` (whole longs)."""
         self.base("dbase")
         self.dlo = min(self.dlo, off)
         self.dhi = max(self.dhi, off + size)
+        self.locs.update(range(off, off + size, 4))
 
     def read(self, off: int) -> str:
         v = self.vals.get(off)
@@ -260,7 +263,7 @@ class BlockCompiler(DataOps):
             "L": chip.mem_longs, "W": chip.mem_words, "mem": chip.mem, "WATCH": chip.watch,
             "B": table, "STUB": stub, "RF": random_forward, "RR": random_reverse,
             "P": chip._pblocks, "PSTUB": chip._pstub, "CLAIM": CLAIM, "WANT_RO": WANT_RO,
-            "AH": chip._ahead, "WANT": chip._want,
+            "AH": chip._ahead, "WANT": chip._want, "HOLE": _hole_in, "OPEN": chip._open,
         }
         for f, fn in enumerate(BINARY):
             if fn is not None:
@@ -369,10 +372,14 @@ class BlockCompiler(DataOps):
                 inside += [f"db + ({b.dlo}) < wl", f"db + {b.dhi} > wh"]
             if inside:
                 head.append(f"    if {' or '.join(inside)}: return CLAIM")
+                s_rng = f"sp + ({lo}), sp + {hi}" if lo < hi else "0, 0"
+                d_locs = f"db, {tuple(sorted(b.locs))}" if locs else "0, ()"
+                head.append(f"    if c.holes and HOLE(c.holes, {s_rng}, {d_locs}): return -1")
             if b.ro:
                 longs = " & ".join(f"WATCH[(({base} + {off}) & 0xFFFF) >> 2]" if base else f"WATCH[{off >> 2}]"
                                    for base, off in sorted(b.ro, key=str))
                 head.append(f"    if not {longs} & {RO}: return WANT_RO")
+            head.append("    if c.cp is None: OPEN(c)")      # from here on it may run past the scheduler's limit
         else:
             if b.loc_writes:    # a watched local (a parked loop reads it): the interpreter writes it
                 longs = " | ".join(f"WATCH[(db + {off}) >> 2]" for off in sorted(b.loc_writes))
@@ -408,7 +415,9 @@ class BlockCompiler(DataOps):
         fn = ns["blk"]
         fn.source = src
         fn.foot = (lo, hi, b.dlo, b.dhi)
+        fn.locs = tuple(sorted(b.locs))
         fn.ro = tuple(b.ro)
+        fn.privatable = not b.shared
         (self.compiled_private if b.private else self.compiled)[start] = (end, b.loops)
         watch = self.chip.watch
         own = self.chip.own
@@ -625,6 +634,7 @@ class BlockCompiler(DataOps):
     def _call(self, b: _Block, op: int) -> None:
         if b.private:
             raise _Stop                         # it reads the object's method table
+        b.shared = True
         T = self.T
         if op == 0x06:
             obj = self._byte(b)

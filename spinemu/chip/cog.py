@@ -50,7 +50,7 @@ class Cog:
         "busy", "learn_mark", "learn_after", "park_t0",
         # running ahead (ahead.py): the cog's private stack window [wlo, whi) in bytes,
         # and the checkpoint of its open private stretch (None while it is not ahead)
-        "wlo", "whi", "cp",
+        "wlo", "whi", "cp", "holes", "pfail", "pfail_n",
     )
 
     def __init__(self, cog_id: int):
@@ -69,6 +69,9 @@ class Cog:
         self.park_t0 = 0
         self.wlo = self.whi = 0
         self.cp = None
+        self.holes = []                 # longs inside [wlo, whi) that left the window
+        self.pfail = -1                 # where its last private phase did nothing, and how often to skip it
+        self.pfail_n = 0
         self.reset_registers()
 
     def reset_registers(self) -> None:

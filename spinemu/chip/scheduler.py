@@ -16,7 +16,7 @@ from __future__ import annotations
 from .blocks import BUSY, CODE, BlockCompiler
 from .cog import PARKED, RUNNING, Cog
 from .control import CogStopped, Preempted, RebootRequested, Reschedule
-from .ahead import AHEAD, CLAIM, NOPRIV, RO, SHARED
+from .ahead import AHEAD, CLAIM, NOPRIV, RO, SHARED, _interpreted
 from .fastforward import INTERRUPTED, LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
 
 __all__ = ["Scheduler", "NEVER"]
@@ -28,10 +28,6 @@ _NEVER = NEVER
 def _preempt_handler(c, op, t):
     raise Preempted
 
-
-def _interpreted(c, tf, limit):
-    """The block table's entry where the first bytecode is left to the interpreter."""
-    return -1
 
 #: compilations of one address (its code keeps changing) after which it stays interpreted
 _RECOMPILE_LIMIT = 8
