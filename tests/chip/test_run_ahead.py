@@ -1,0 +1,75 @@
+"""Running ahead (spinemu/chip/ahead.py) changes nothing: the same runs as the exact hand-over.
+
+Every comparison runs a program with ``Chip(run_ahead=False)`` (every hub
+access handed over in cycle order) and with the default scheduling, and
+requires everything a run produces to be identical (schedule_compare.py):
+pin trace, hub RAM, end cycle and reason, bytecodes and PASM instructions
+per cog, cog events, or the fault's message.  The programs: every image
+under tests/data, and a seeded sample of the generated multi-cog programs
+(tests/benchmarks/run_ahead_campaign.py runs thousands).
+"""
+from __future__ import annotations
+
+import glob
+import os
+
+import pytest
+
+from spinemu.chip import Chip
+from spinemu.compiler import compile_source
+
+from chip_helpers import ROOT
+from multicog_programs import program
+from schedule_compare import differences, generated_differences, generated_image
+
+IMAGES = sorted(p for p in glob.glob(os.path.join(ROOT, "tests", "data", "**", "*.binary"), recursive=True)
+                if os.sep + "disasm" + os.sep not in p)
+#: cycles each image runs (the article programs run longer: their cogs start late)
+CYCLES = 12_000_000
+
+
+@pytest.mark.parametrize("path", IMAGES, ids=lambda p: os.path.relpath(p, os.path.join(ROOT, "tests", "data"))[:-7])
+def test_every_test_image_runs_the_same_ahead_and_exact(path):
+    with open(path, "rb") as f:
+        image = f.read()
+    cycles = 60_000_000 if os.sep + "article" + os.sep in path else CYCLES
+    assert differences(image, cycles) == []
+
+
+#: a seeded sample of the generated programs (the campaign script runs 0..999 and more)
+SEEDS = [3, 17, 42, 101, 256, 333, 512, 777, 901, 1234, 2024, 4096]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_generated_multicog_programs_run_the_same_ahead_and_exact(seed):
+    assert generated_differences(seed, 1_500_000) == []
+
+
+def test_busy_cogs_do_run_ahead():
+    # eight cogs in loops over locals: most of their bytecodes run in private stretches
+    src = "\n".join([
+        "VAR", "  long stack[224], results[8]",
+        "PUB main | i", "  repeat i from 1 to 7", "    cognew(work(i), @stack[(i - 1) * 32])", "  work(0)",
+        "PRI work(id) | k, x", "  x := id", "  repeat k from 1 to 500", "    x := x * 3 + k ^ (x >> 5)",
+        "  results[id] := x", ""])
+    image = compile_source(src, "busy.spin").binary
+    r = Chip(image).run()
+    assert r.reason == "all cogs stopped"
+    assert r.stats["private_stretches"] >= 8          # every cog ran ahead at least once
+    assert Chip(image, run_ahead=False).run().stats["private_stretches"] == 0
+    assert differences(image, None) == []
+
+
+def test_the_sample_rolls_cogs_back():
+    # the sample reaches the rollback path (another cog touches a window of a cog that is ahead)
+    r = Chip(generated_image(1234)).run(max_cycles=1_500_000)
+    assert r.stats["rollbacks"] > 0 and r.stats["private_stretches"] > 0
+
+
+def test_a_generated_program_exercises_every_kind_of_meeting():
+    # the generator's menu reaches locks, mailboxes, pins, cog control and stack peeks within the sample
+    text = "\n".join(program(s) for s in SEEDS)
+    for needle in ("lockset", "mbox", "ring[", "waitpeq", "waitpne", "cogstop", "coginit", "ina[", "stacks[",
+                   "long[ptr]"):
+        assert needle in text, needle
+
