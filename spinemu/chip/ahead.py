@@ -120,6 +120,7 @@ class RunAhead:
         self._guard_handlers = None
         self._g_cog = None              # the guarded bytecode running now, and its key
         self._g_key = 0
+        self._reboot_key = 0            # the key of the bytecode that rebooted the chip
         self._rollbacks = 0
         self._stretches = 0
         #: the hub address a private block wants read-only when it leaves (set by the block)
@@ -517,6 +518,7 @@ class RunAhead:
         except RebootRequested:
             c.bytecodes += n + 1
             c.t = tf
+            self._reboot_key = key
             raise
         except IndexError:
             raise self.fault(c, c.pc - 1, "stack or address out of hub range") from None

@@ -213,7 +213,7 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
     seen = {}                       # (pc, state, t mod 16) -> index into marks
     marks = []                      # per bytecode: (t, log position, stack pointer)
     P = c.hub_phase
-    from .control import Reschedule  # local: keep module import light
+    from .control import RebootRequested, Reschedule  # local: keep module import light
     acc = chip.access_at
     chip.learn_tracked = 0
     failed = 0
@@ -254,6 +254,9 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
         except Reschedule as e:      # not expected for pure ops; be safe
             c.t = tf + e.rest
             return None
+        except RebootRequested:
+            chip._reboot_key = tf + acc[op]
+            raise
         c.bytecodes += 1
     return None
 

@@ -156,6 +156,8 @@ class Scheduler:
                     run(c, until)
             except RebootRequested:
                 self.now = c.t
+                if self._ahead:         # the cogs ahead ran past the reboot: back to its moment
+                    self._sync_all(c, self._reboot_key)
                 return "reboot"
             if progress is not None and t >= next_report:
                 progress(t)
@@ -366,6 +368,7 @@ class Scheduler:
         except RebootRequested:
             c.bytecodes += n + 1
             c.t = tf
+            self._reboot_key = tf + ACC[op]
             raise
         except IndexError:
             raise self.fault(c, c.pc - 1, "stack or address out of hub range") from None
@@ -468,6 +471,7 @@ class Scheduler:
         except RebootRequested:
             c.bytecodes += 1
             c.t = tf
+            self._reboot_key = key
             raise
         except IndexError:
             raise self.fault(c, c.pc - 1, "stack or address out of hub range") from None

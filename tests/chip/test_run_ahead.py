@@ -37,7 +37,7 @@ def test_every_test_image_runs_the_same_ahead_and_exact(path):
 
 
 #: a seeded sample of the generated programs (the campaign script runs 0..999 and more)
-SEEDS = [3, 17, 42, 101, 256, 333, 512, 777, 901, 1234, 2024, 4096]
+SEEDS = [3, 17, 42, 101, 256, 333, 463, 512, 777, 901, 1234, 2024, 4096]
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -64,6 +64,15 @@ def test_the_sample_rolls_cogs_back():
     # the sample reaches the rollback path (another cog touches a window of a cog that is ahead)
     r = Chip(generated_image(1234)).run(max_cycles=1_500_000)
     assert r.stats["rollbacks"] > 0 and r.stats["private_stretches"] > 0
+
+
+def test_a_reboot_brings_back_the_cogs_that_ran_past_it():
+    # seed 463: a cog started at $0000 runs into CLKSET's reset bit while cog 0 is ahead in a private
+    # stretch; cog 0's stack and bytecode count must be as at the reboot's moment
+    image = generated_image(463)
+    r = Chip(image).run(max_cycles=4_000_000)
+    assert r.reason == "reboot"
+    assert differences(image, 4_000_000) == []
 
 
 def test_a_generated_program_exercises_every_kind_of_meeting():
