@@ -99,18 +99,7 @@ def _frame_bits(b: int, seven_e: bool) -> list[int]:
 
 def _wait_pin(m: Machine, pin: int, level: int, timeout_ms: Optional[int]) -> bool:
     """Wait for an input to read ``level``; False if ``timeout_ms`` passed first."""
-    if m.input_level(pin) == level:
-        return True
-    deadline = None if timeout_ms is None else m.t + timeout_ms * 1000
-    nxt = m.stim.next_change(pin, m.t, deadline)
-    if nxt is None:
-        if deadline is None:
-            m.advance_to(m.limit if m.limit is not None else m.t)
-            raise StopRun("input")
-        m.advance_to(deadline)
-        return False
-    m.advance_to(nxt)
-    return True
+    return m.wait_input(pin, level, None if timeout_ms is None else m.t + timeout_ms * 1000) is not None
 
 
 def make_debug(items: list) -> Callable:
