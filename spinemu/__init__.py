@@ -88,7 +88,8 @@ def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] =
     """Compile (if ``target`` is a ``.spin`` file) and run a Propeller program.
 
     Args:
-        target: a ``.spin`` source, a ``.binary``/``.eeprom`` file, or image bytes.
+        target: a ``.spin`` source, a ``.binary``/``.eeprom`` file, or image bytes (a
+            32 KB EEPROM image is loaded whole, as the boot loader does).
         cycles, seconds: where to stop (default: when every cog has stopped).
         compat: ``"spinsim"`` (default: the reference simulator, cycle for cycle) or ``"chip"``
             (the silicon's cog load time, lock numbering and hub windows; see docs/timing.md).
@@ -106,12 +107,15 @@ def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] =
     from .image import ImageHeader, load_image
 
     if isinstance(target, (bytes, bytearray)):
-        image = load_image(bytes(target))
+        data, name = bytes(target), "<image>"
     elif str(target).lower().endswith(".spin"):
-        image = compile_spin(target, include_dirs).binary
+        data, name = compile_spin(target, include_dirs).binary, str(target)
     else:
         with open(target, "rb") as f:
-            image = load_image(f.read(), str(target))
+            data, name = f.read(), str(target)
+    image = load_image(data, name)
+    if len(data) == 32768:
+        image = data                # a whole EEPROM boots whole (data stored past the program included)
     limit = cycles
     if seconds is not None:
         limit = int(round(seconds * (ImageHeader.parse(image).clkfreq or 80_000_000)))

@@ -182,6 +182,8 @@ class _LiveView:
         if self._live is not None:
             self._live.update(self._table(self.bench.end_cycle or 0), refresh=True)
             self._live.__exit__(*exc)
+            if not self.out.console.is_terminal:
+                self.out.console.line()             # the last frame ends without a new line
 
     def _tick(self, cycle: int) -> None:
         if cycle >= 1 << 62 or self._live is None:

@@ -37,19 +37,7 @@ SPI and pulse decoders (:mod:`~spinemu.bench.i2c`, :mod:`~spinemu.bench.spi`,
 """
 from __future__ import annotations
 
-from .board import Bench, BenchInputs, BenchPinError
-from .button import Button
-from .console import SerialConsole
-from .eeprom import I2cEeprom
-from .inputs import PinStimulus, PinWaveforms, parse_input_spec
-from .lcd import Lcd, SerialLcd
-from .led import Led
-from .monitors import I2cMonitor, PulseMonitor, SpiMonitor
-from .part import Part, PartWarning, ReactivePart
-from .rc import Potentiometer, RcCircuit
-from .servo import Servo
-from .stepper import Stepper
-from .uart import Frame, UartDecoder, UartFormat, UartWaveform, decode_uart, frame_bits
+import importlib
 
 __all__ = ["Bench", "BenchInputs", "BenchPinError", "Part", "ReactivePart", "PartWarning",
            "Led", "Button", "RcCircuit", "Potentiometer", "Servo", "Lcd", "SerialLcd", "I2cEeprom", "Stepper",
@@ -57,6 +45,28 @@ __all__ = ["Bench", "BenchInputs", "BenchPinError", "Part", "ReactivePart", "Par
            "PinStimulus", "PinWaveforms", "parse_input_spec",
            "UartFormat", "UartWaveform", "UartDecoder", "Frame", "decode_uart", "frame_bits"]
 
-#: the built-in parts by their name in bench files
-PART_KINDS = {cls.kind: cls for cls in (Led, Button, RcCircuit, Potentiometer, Servo, Lcd, SerialLcd, I2cEeprom,
-                                        Stepper, SerialConsole, I2cMonitor, SpiMonitor, PulseMonitor)}
+# names are imported on first use, so that an engine importing one module (the chip: input models)
+# does not load every part
+_WHERE = {
+    "Bench": "board", "BenchInputs": "board", "BenchPinError": "board", "Part": "part", "ReactivePart": "part",
+    "PartWarning": "part", "Led": "led", "Button": "button", "RcCircuit": "rc", "Potentiometer": "rc",
+    "Servo": "servo", "Lcd": "lcd", "SerialLcd": "lcd", "I2cEeprom": "eeprom", "Stepper": "stepper",
+    "SerialConsole": "console", "I2cMonitor": "monitors", "SpiMonitor": "monitors", "PulseMonitor": "monitors",
+    "PinStimulus": "inputs", "PinWaveforms": "inputs", "parse_input_spec": "inputs",
+    "UartFormat": "uart", "UartWaveform": "uart", "UartDecoder": "uart", "Frame": "uart", "decode_uart": "uart",
+    "frame_bits": "uart",
+}
+_KINDS = ("Led", "Button", "RcCircuit", "Potentiometer", "Servo", "Lcd", "SerialLcd", "I2cEeprom", "Stepper",
+          "SerialConsole", "I2cMonitor", "SpiMonitor", "PulseMonitor")
+
+
+def __getattr__(name: str):
+    if name == "PART_KINDS":
+        #: the built-in parts by their name in bench files
+        value = {cls.kind: cls for cls in (__getattr__(n) for n in _KINDS)}
+    elif name in _WHERE:
+        value = getattr(importlib.import_module(f"{__name__}.{_WHERE[name]}"), name)
+    else:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    globals()[name] = value
+    return value

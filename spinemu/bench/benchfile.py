@@ -47,16 +47,13 @@ from typing import Optional
 from ..diagnostics import SpinError
 from .board import Bench, BenchPinError
 
-__all__ = ["load_bench", "read_bench", "PIN_PARAMETERS"]
+__all__ = ["load_bench", "read_bench"]
 
 if sys.version_info >= (3, 11):
     import tomllib
 else:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
-#: parameters whose values are pins (a number or a list of numbers)
-PIN_PARAMETERS = ("pin", "scl", "sda", "rs", "e", "rw", "data", "coils", "enable", "tx", "rx", "sclk", "mosi",
-                  "miso", "cs")
 #: parameters whose string values are file names, relative to the bench file
 PATH_PARAMETERS = ("data",)
 
@@ -72,6 +69,7 @@ M_PIN = "{0}: pin {1!r} does not exist on {2} (pins are 0..{3})"
 M_REFUSED = "{0}: {1}"
 M_USER_CLASS = "cannot load the part class '{0}': {1}"
 M_NOT_A_PART = "'{0}' is not a part (a subclass of spinemu.bench.Part)"
+M_FILE = "{0}: cannot read '{1}': {2}"
 
 
 class _Lines:
@@ -158,15 +156,19 @@ def read_bench(text: str, path: str = "<bench>", *, pin_count: int = 32, engine:
         kwargs = {key: value for key, value in table.items() if key != "type"}
         _check_parameters(cls, kwargs, path, lines, keys, head)
         for key, value in kwargs.items():
-            if key in PIN_PARAMETERS:
+            if key in cls.pin_parameters and value is not None:
                 for pin in value if isinstance(value, list) else [value]:
                     if isinstance(pin, bool) or not isinstance(pin, int) or not 0 <= pin < pin_count:
                         raise _error(path, lines, M_PIN.format(cls.kind, pin, engine, pin_count - 1), keys.get(key, head))
-            if key in PATH_PARAMETERS and isinstance(value, str):
+            elif key in PATH_PARAMETERS and isinstance(value, str):
                 kwargs[key] = os.path.join(folder, value)
         try:
             part = cls(**kwargs)
-        except (ValueError, TypeError, OSError) as e:
+        except OSError as e:
+            key = next((k for k in PATH_PARAMETERS if k in table), None)
+            raise _error(path, lines, M_FILE.format(cls.kind, table.get(key, e.filename), e.strerror or e),
+                         keys.get(key, head)) from None
+        except (ValueError, TypeError) as e:
             where = next((keys[key] for key in keys if key != "type" and re.search(rf"\b{re.escape(key)}\b", str(e))),
                          head)
             raise _error(path, lines, M_REFUSED.format(cls.kind, e), where) from None
@@ -174,7 +176,8 @@ def read_bench(text: str, path: str = "<bench>", *, pin_count: int = 32, engine:
         try:
             bench.add(part)
         except BenchPinError as e:
-            where = next((keys[key] for key in PIN_PARAMETERS if key in keys and _has_pin(table[key], e.pin)), head)
+            where = next((keys[key] for key in cls.pin_parameters if key in keys and _has_pin(table[key], e.pin)),
+                         head)
             raise _error(path, lines, str(e), where) from None
     return bench
 

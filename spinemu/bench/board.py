@@ -214,7 +214,7 @@ class Bench:
 
     def view(self) -> list[tuple[str, str]]:
         """``(name, state)`` of every part now (the live view's rows)."""
-        return [(p.name, p.view()) for p in self.parts]
+        return [(p.name, p.view() if p.port is not None else "") for p in self.parts]
 
     def wire_trace(self, trace: PinTrace) -> PinTrace:
         """``trace`` with the levels the bench put on the pins it drives.

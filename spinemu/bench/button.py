@@ -109,10 +109,16 @@ class Button(Part):
         """Held down at ``seconds`` (bounce aside)."""
         return any(a <= seconds < b for a, b in self.presses)
 
+    def finish(self, end_cycle: int) -> None:
+        self._seen = end_cycle
+
     def summary(self) -> str:
-        n = len(self.presses)
+        end = self._now() / self.clock_hz if self.clock_hz else 0.0
+        n = sum(1 for at, _ in self.presses if at < end)
+        later = len(self.presses) - n
         b = f", bouncing {self.bounce * 1e3:g} ms" if self.bounce else ""
-        return f"{self.name}: pressed {n} time{'s' if n != 1 else ''}{b}"
+        rest = f" ({later} more after the end of the run)" if later else ""
+        return f"{self.name}: pressed {n} time{'s' if n != 1 else ''}{b}{rest}"
 
     def view(self) -> str:
         return "pressed" if self._stim and (self._stim.levels(self._now()) >> self.pin & 1) == self.active else "up"

@@ -63,6 +63,7 @@ class SerialConsole(Part):
     """
 
     kind = "console"
+    pin_parameters = ("tx", "rx")
 
     def __init__(self, tx: int = DEFAULT_TX, rx: int = DEFAULT_RX, baud: float = DEFAULT_BAUD, *,
                  inverted: bool = False, stop_bits: int = 1,

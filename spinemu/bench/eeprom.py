@@ -57,6 +57,8 @@ class _BusState:
     read: bool = False
     ptr: int = 0                    # the address counter
     page: list = field(default_factory=list)   # (address, value) waiting for the STOP
+    start: int = 0                  # the address a write began at
+    sent: list = field(default_factory=list)   # the data bytes of the write, as sent
     wrapped: bool = False
     busy_until: int = 0
     sending: int = 0
@@ -77,7 +79,8 @@ class I2cEeprom(ReactivePart):
 
     Attributes:
         memory: the content (a ``bytearray``).
-        writes: ``(cycle, first address, bytes)`` of each page write.
+        writes: ``(cycle, first address, bytes as sent)`` of each page write
+            (bytes past the end of the page went to its start).
 
     Raises:
         ValueError: for a bad pin, chip name, address, or data longer than the memory.
@@ -85,6 +88,7 @@ class I2cEeprom(ReactivePart):
     """
 
     kind = "eeprom"
+    pin_parameters = ("scl", "sda")
 
     def __init__(self, *, scl: int = 28, sda: int = 29, chip: str = "24LC256", address: int = 0,
                  data: Union[bytes, bytearray, str, os.PathLike, None] = None, write_time: float = 5e-3,
@@ -216,13 +220,12 @@ class I2cEeprom(ReactivePart):
 
     def _commit(self, cycle: int) -> None:
         s = self.s
-        first = s.page[0][0]
         for addr, value in s.page:
             self._journal.append((addr, self.memory[addr]))
             self.memory[addr] = value
-        self.writes.append((cycle, first, bytes(v for _, v in s.page)))
+        self.writes.append((cycle, s.start, bytes(s.sent)))
         if s.wrapped:
-            self.warn(cycle, f"page write of {len(s.page)} bytes from ${first:04X} went past the end of its "
+            self.warn(cycle, f"page write of {len(s.sent)} bytes from ${s.start:04X} went past the end of its "
                              f"{self.page_size}-byte page and wrapped to its start")
         s.ptr = (s.page[-1][0] + 1) % self.size
         s.busy_until = cycle + int(round(self.write_time * self.clock_hz))
@@ -298,8 +301,10 @@ class I2cEeprom(ReactivePart):
             s.ptr = (v << 8) & (self.size - 1)
         elif index == 2:
             s.ptr = (s.ptr | v) & (self.size - 1)
+            s.start, s.sent = s.ptr, []
         else:
             n = index - 3
+            s.sent.append(v)
             page = s.ptr & ~(self.page_size - 1)
             addr = page | ((s.ptr + n) & (self.page_size - 1))
             if n >= self.page_size:
@@ -309,9 +314,16 @@ class I2cEeprom(ReactivePart):
         return True
 
     # ------------------------------------------------------------------ reports
+    def written_addresses(self, write) -> list:
+        """The addresses a page write ``(cycle, first, data)`` went to, in the order sent."""
+        _, first, data = write
+        page = first & ~(self.page_size - 1)
+        return [page | ((first + n) & (self.page_size - 1)) for n in range(len(data))]
+
     @property
     def bytes_written(self) -> int:
-        return sum(len(data) for _, _, data in self.writes)
+        """Bytes of memory written (a byte written twice in one page write counts once)."""
+        return sum(len(set(self.written_addresses(w))) for w in self.writes)
 
     @property
     def bytes_read(self) -> int:
@@ -320,8 +332,8 @@ class I2cEeprom(ReactivePart):
     def summary(self) -> str:
         w = self.writes
         if w:
-            lo = min(a for _, a, _ in w)
-            hi = max(a + len(d) - 1 for _, a, d in w)
+            addresses = [a for x in w for a in self.written_addresses(x)]
+            lo, hi = min(addresses), max(addresses)
             wrote = (f"{self.bytes_written} bytes written in {len(w)} page write{'s' if len(w) != 1 else ''} "
                      f"(${lo:04X}-${hi:04X})")
         else:

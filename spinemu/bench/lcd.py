@@ -111,6 +111,7 @@ class Lcd(ReactivePart):
     """
 
     kind = "lcd"
+    pin_parameters = ("rs", "e", "rw", "data")
 
     def __init__(self, *, rs: int, e: int, data: Sequence[int], rw: Optional[int] = None, lines: int = 2,
                  columns: int = 16, name: Optional[str] = None):

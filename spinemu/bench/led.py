@@ -95,6 +95,8 @@ class Led(Part):
         return lit / end
 
     def summary(self) -> str:
+        if not self.turned_on:
+            return f"{self.name}: never lit"
         state = "on" if self.lit else "off"
         return (f"{self.name}: turned on {self.turned_on} time{'s' if self.turned_on != 1 else ''}, "
                 f"lit {100 * self.duty:.1f} % of the time, {state} at the end")

@@ -34,6 +34,7 @@ class I2cMonitor(_Monitor):
     """Decodes the I2C bus on ``scl``/``sda``: ``transfers`` (:class:`~spinemu.bench.i2c.I2cTransfer`)."""
 
     kind = "i2c"
+    pin_parameters = ("scl", "sda")
 
     def __init__(self, *, scl: int = 28, sda: int = 29, name: Optional[str] = None):
         super().__init__(name=name)
@@ -82,6 +83,7 @@ class SpiMonitor(_Monitor):
     """Decodes SPI (mode 0-3) on ``sclk``, ``mosi`` and optional ``miso`` and ``cs``: ``words``."""
 
     kind = "spi"
+    pin_parameters = ("sclk", "mosi", "miso", "cs")
 
     def __init__(self, *, sclk: int, mosi: int, miso: Optional[int] = None, cs: Optional[int] = None,
                  mode: int = 0, bits: int = 8, lsb_first: bool = False, name: Optional[str] = None):

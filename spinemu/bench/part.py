@@ -96,6 +96,8 @@ class Part:
     """
 
     kind = "part"
+    #: the constructor's parameters that are pins (bench files check them against the engine)
+    pin_parameters = ("pin",)
     reactive = False
     #: the part lets go of its driven pins at times (:meth:`released` says which): they then read
     #: what the engine's own input model says
@@ -338,7 +340,7 @@ class ReactivePart(Part):
                     self._checkpoints.pop()
                 self.restore(state)
                 del self._log[n_log:]
-                j = bisect_left(self._times, done)
+                j = max(1, bisect_left(self._times, done))
                 del self._times[j:]
                 del self._values[j:]
                 for t, v in tail:

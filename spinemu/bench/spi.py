@@ -147,29 +147,37 @@ def spi_levels(words, *, mode: int = 0, bits: int = 8, half_bit: int = 100, star
                miso_words=None, lsb_first: bool = False) -> list:
     """``(cycle, sclk, mosi, miso, cs)`` of a master sending ``words`` (one CS frame each): a test signal.
 
-    Data change half a clock before the sampling edge, as every SPI device expects.
+    As SPI devices do, the data change on the edge that is not the sampling
+    edge: with CPHA = 0 the first bit is set up after CS falls and the next
+    ones on each trailing edge; with CPHA = 1 each bit on its leading edge.
     """
     cpol, cpha = mode >> 1, mode & 1
     t = start
     out = [(t, cpol, 0, 0, 1)]
     miso_words = list(miso_words) if miso_words is not None else [0] * len(words)
     for w, r in zip(words, miso_words):
+        order = list(range(bits) if lsb_first else range(bits - 1, -1, -1))
+        bit = [((w >> i) & 1, (r >> i) & 1) for i in order]
         t += half_bit
-        out.append((t, cpol, 0, 0, 0))          # select
-        order = range(bits) if lsb_first else range(bits - 1, -1, -1)
-        for i in order:
-            a, b = (w >> i) & 1, (r >> i) & 1
+        out.append((t, cpol, 0, 0, 0))                          # select
+        if cpha == 0:
+            out.append((t + half_bit // 2, cpol, *bit[0], 0))   # the first bit before the first edge
+        lag = max(1, half_bit // 4)                             # data follow the shifting edge a little later
+        prev = bit[0] if cpha == 0 else (0, 0)
+        for k, (a, b) in enumerate(bit):
+            t += half_bit
             if cpha == 0:
-                out.append((t + half_bit // 2, cpol, a, b, 0))      # set up before the leading edge
+                out.append((t, 1 - cpol, a, b, 0))              # leading edge: sampled
                 t += half_bit
-                out.append((t, 1 - cpol, a, b, 0))                  # leading: sample
-                t += half_bit
-                out.append((t, cpol, a, b, 0))                      # trailing
+                out.append((t, cpol, a, b, 0))                  # trailing edge: shifts...
+                if k + 1 < len(bit):
+                    out.append((t + lag, cpol, *bit[k + 1], 0))     # ... the next bit out
             else:
+                out.append((t, 1 - cpol, *prev, 0))             # leading edge: shifts...
+                out.append((t + lag, 1 - cpol, a, b, 0))        # ... the bit out
                 t += half_bit
-                out.append((t, 1 - cpol, a, b, 0))                  # leading: shift out
-                t += half_bit
-                out.append((t, cpol, a, b, 0))                      # trailing: sample
+                out.append((t, cpol, a, b, 0))                  # trailing edge: sampled
+            prev = (a, b)
         t += half_bit
-        out.append((t, cpol, 0, 0, 1))          # deselect
+        out.append((t, cpol, 0, 0, 1))                          # deselect
     return out

@@ -31,6 +31,7 @@ class Stepper(Part):
     """
 
     kind = "stepper"
+    pin_parameters = ("coils", "enable")
 
     def __init__(self, *, coils: Sequence[int], enable: Optional[int] = None, name: Optional[str] = None):
         super().__init__(name=name)
