@@ -203,3 +203,24 @@ def test_parts_leave_the_column_demo_trace_unchanged():
     bench = Bench([Stepper(coils=[1, 2, 3, 4], enable=0), Led(pin=0)])
     got = spinemu.run_spin(ROOT / "spin_src" / "corrected" / "stepper_demo.spin", seconds=2.0, parts=bench)
     assert got.trace.changes == ref.trace.changes and got.end_cycle == ref.end_cycle
+
+
+def test_the_eeprom_program_runs_as_on_spinsims_emulated_eeprom_to_the_cycle():
+    """spinsim 0.99 ``-e`` emulates a 64 KB EEPROM on P28/P29 without a write cycle (and without page
+    wrapping): with ``write_time=0`` the part answers every read alike, so the whole trace is the same."""
+    import json
+    record = json.loads((PARTS / "eeprom_rw.spinsim.json").read_text())
+    eeprom = I2cEeprom(chip="24LC512", write_time=0)
+    result = spinemu.run_spin((PARTS / "eeprom_rw.binary").read_bytes(), parts=[eeprom])
+    assert result.end_cycle == record["end_cycle"]
+    assert [list(c) for c in result.trace.changes[:len(record["trace"])]] == record["trace"]
+    assert result.trace.changes[len(record["trace"]):] == [(record["end_cycle"], 0, 0)]     # the cog stopped
+    vbase = struct.unpack_from("<H", result.hub, 8)[0]
+    assert list(struct.unpack_from("<2i", result.hub, vbase)) == record["acks_polls"] == [11, 1]
+    assert list(result.hub[vbase + 8:vbase + 13]) == record["readback"]
+    assert bytes(eeprom.memory[0x7F00:0x7F05]).hex() == record["eeprom_7f00"][:10]
+
+
+@pytest.mark.parametrize("name", sorted(p.stem for p in PARTS.glob("*.spin")))
+def test_the_part_programs_compile_to_openspins_images(name):
+    assert compile_file(str(PARTS / f"{name}.spin")).binary == (PARTS / f"{name}.binary").read_bytes()
