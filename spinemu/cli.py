@@ -273,7 +273,10 @@ def cmd_run(args, out: _Out) -> int:
     else:
         from .chip import Chip
 
-        chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map)
+        log = _runtime_warning_log(args, out, prog)
+        chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map,
+                    warn=log if log is not None else False,
+                    debug_info=prog.debug_info() if prog is not None else None)
         progress, update = _progress_callback(out, limit, clock, not args.no_progress)
         if progress is not None:
             with progress:
@@ -295,8 +298,44 @@ def cmd_run(args, out: _Out) -> int:
                 ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
         if args.trace:
             rows.append(("trace", f"{args.trace} ({len(result.trace.changes)} changes)"))
+        rows.extend(_runtime_warning_rows(getattr(result, "runtime_warnings", [])))
         out.print(_summary_table(result.trace, result.end_cycle, rows))
     return 0
+
+
+# ----------------------------------------------------------------------------- runtime warnings
+def _runtime_warning_log(args, out: _Out, prog):
+    """The WarningLog for a Spin run: printed to stderr as they happen; None with --no-warn."""
+    if args.no_warn:
+        return None
+    from .runtime_warnings import WarningLog
+
+    def show(w):
+        out.err_console.print(_render_error_diagnostic(w.diagnostic()), markup=False, highlight=False)
+
+    if prog is not None:
+        info = prog.debug_info()
+        return WarningLog(info.position, info.source_line, werror=args.werror == "error", sink=show)
+    return WarningLog(werror=args.werror == "error", sink=show)
+
+
+def _runtime_warning_rows(warnings) -> list:
+    """Summary rows: one per warning place, ``file:line: kind (N times)``."""
+    rows = []
+    for i, w in enumerate(warnings):
+        where = _short_path(w.path) + f":{w.line}" if w.path else f"cog {w.cog} at ${w.addr:04X}"
+        times = f" ({w.count} times)" if w.count > 1 else ""
+        rows.append(("warnings" if i == 0 else "", f"{where}: {w.kind}{times}"))
+    return rows
+
+
+def _warning_options(p) -> None:
+    p.add_argument("--no-warn", action="store_true",
+                   help="no runtime warnings (waitcnt for a passed count, a stack past its cognew array, "
+                        "cognew with no free cog, pin conflicts between cogs, writes outside hub RAM or "
+                        "into the code, locals read before they are assigned; docs/warnings.md)")
+    p.add_argument("-W", dest="werror", choices=["error"], metavar="error",
+                   help="-Werror: a runtime warning stops the run as an error (exit status 1)")
 
 
 _PBASIC_REASONS = {"end": "END statement", "stop": "STOP statement", "time": "time limit",
@@ -511,6 +550,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="BASIC Stamp only: exact command durations, or with per-instruction interpreter time")
     r.add_argument("--no-progress", action="store_true", help="no progress bar")
     r.add_argument("-q", "--quiet", action="store_true", help="no summary")
+    _warning_options(r)
     r.set_defaults(func=cmd_run)
 
     d = sub.add_parser("disasm", help="list an image: header, objects, bytecode, PASM",
@@ -618,18 +658,22 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
 
 def _render_error(err: SpinError) -> str:
     """The error's diagnostics, with paths under the working directory shown relative to it."""
+    return "\n".join(_render_error_diagnostic(d) for d in err.diagnostics)
+
+
+def _short_path(path):
+    """``path`` relative to the working directory when it lies under it."""
+    if path and os.path.isabs(path):
+        rel = os.path.relpath(path, os.getcwd())
+        if not rel.startswith(".."):
+            return rel
+    return path
+
+
+def _render_error_diagnostic(d) -> str:
     from dataclasses import replace
 
-    cwd = os.getcwd()
-
-    def short(path):
-        if path and os.path.isabs(path):
-            rel = os.path.relpath(path, cwd)
-            if not rel.startswith(".."):
-                return rel
-        return path
-
-    return "\n".join(replace(d, path=short(d.path)).render() for d in err.diagnostics)
+    return replace(d, path=_short_path(d.path)).render()
 
 
 def entry_point() -> None:

@@ -49,10 +49,16 @@ class Pins:
         self.pin_events.append((t, self._seq, c.id, c.dira, out, c.state != STOPPED))
 
     def note_pins(self, c: Cog, t: int) -> None:
-        """Cog ``c`` changed DIRA, OUTA or a counter at cycle ``t`` (the pins change then)."""
+        """Cog ``c`` changed DIRA, OUTA or a counter at cycle ``t`` (the pins change then).
+
+        ``pin_listeners`` (runtime checks, a debugger) are called as ``f(c, t)`` afterwards.
+        """
         self.record_cog_pins(c, t)
         if self._pin_waiters:
             self._wake_pin_waiters(t)
+        if self.pin_listeners:
+            for f in self.pin_listeners:
+                f(c, t)
 
     def wait_pins(self, c: Cog, mask: int, state: int, equal: bool, tf: int) -> int:
         issue, after = self.timing.waitpin[equal]

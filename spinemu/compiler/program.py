@@ -26,13 +26,18 @@ __all__ = ["compile_file", "compile_source", "CompiledProgram", "LineTable", "In
 class LineTable:
     """Hub address -> ``(path, line)`` of the Spin source that made the byte there.
 
-    Call it with an address (``table(0x28)``) or use :meth:`get`.
+    Call it with an address (``table(0x28)``) or use :meth:`get`;
+    :meth:`position` adds the column of the statement.
+
+    Args:
+        entries: ``(start, end, path, line)`` or ``(start, end, path, line, col)``.
     """
 
     def __init__(self, entries):
         entries = sorted(entries)
         self._starts = [e[0] for e in entries]
-        self._entries = entries
+        self._cols = [e[4] if len(e) > 4 else 1 for e in entries]
+        self._entries = [tuple(e[:4]) for e in entries]
 
     def __call__(self, addr: int):
         i = bisect.bisect_right(self._starts, addr) - 1
@@ -43,11 +48,21 @@ class LineTable:
 
     get = __call__
 
+    def position(self, addr: int):
+        """``(path, line, col)`` of the statement that made the byte at ``addr``, or ``None``."""
+        i = bisect.bisect_right(self._starts, addr) - 1
+        if i < 0:
+            return None
+        start, end, path, line = self._entries[i]
+        return (path, line, self._cols[i]) if start <= addr < end else None
+
     def __len__(self) -> int:
         return len(self._entries)
 
-    def items(self):
-        """``(start, end, path, line)`` ranges in address order."""
+    def items(self, columns: bool = False):
+        """``(start, end, path, line)`` ranges in address order (``columns``: with the column too)."""
+        if columns:
+            return [e + (col,) for e, col in zip(self._entries, self._cols)]
         return list(self._entries)
 
 
@@ -100,6 +115,17 @@ class CompiledProgram:
     def eeprom(self) -> bytes:
         """The 32 KB EEPROM image (what OpenSpin writes with ``-e``)."""
         return to_eeprom(self.binary)
+
+    def debug_info(self):
+        """Names and places for tools that look into a running chip (:class:`spinemu.debuginfo.DebugInfo`).
+
+        Built from the compiler's own records on first use; the image is not touched.
+        """
+        info = getattr(self, "_debug_info", None)
+        if info is None:
+            from .debug import build_debug_info
+            info = self._debug_info = build_debug_info(self)
+        return info
 
     def listing(self, addresses: bool = True) -> str:
         """The listing: every object's bytes next to the source lines that made them.
@@ -154,7 +180,8 @@ def _compile_unit(top_unit) -> CompiledProgram:
         base = addr[id(c.unit)]
         for s in c.spans:
             if s.pos is not None and s.data:
-                entries.append((base + s.offset, base + s.offset + len(s.data), s.pos.path, s.pos.line))
+                entries.append((base + s.offset, base + s.offset + len(s.data), s.pos.path, s.pos.line,
+                                s.pos.col))
     vbase = int.from_bytes(image[8:10], "little")
     layout = _instance_layout(top, "", addr, vbase, compiled)
     return CompiledProgram(image, LineTable(entries), layout, [], placed, addr)
