@@ -4,7 +4,7 @@ import importlib
 
 import pytest
 
-MODULES = ["spinemu.debuginfo", "spinemu.runtime_warnings", "spinemu.chip.checks"]
+MODULES = ["spinemu.debuginfo", "spinemu.runtime_warnings", "spinemu.chip.checks", "spinemu.debugger.frames"]
 
 
 @pytest.mark.parametrize("name", MODULES)

@@ -177,6 +177,7 @@ class Chip(Pins, Scheduler):
         self.access_at = access_offsets()
         self._handlers = list(self.handlers)      # the real ones, while a preemption is pending
         self._preempt = False
+        self._halt_reason = None
         self.pin_events: list = []          # (cycle, seq, cog, dira, outa, running)
         self.cog_events: list = []
         self.warnings: list = []
@@ -390,6 +391,11 @@ class Chip(Pins, Scheduler):
             return self._schedule(limit, progress)
         except Halted as h:
             return h.reason
+        finally:
+            if self._halt_reason is not None:   # a halt nobody reached: forget it
+                self._halt_reason = None
+                self.handlers[:] = self._handlers
+                self._preempt = False
 
     def result(self, reason: str = "cycle limit", wall: float = 0.0) -> RunResult:
         """The :class:`RunResult` of the run so far (trace, hub RAM, statistics) at cycle ``now``."""
@@ -438,8 +444,8 @@ class Chip(Pins, Scheduler):
         else:
             self.mem_longs[a >> 2] = value & 0xFFFFFFFF
 
-    def release_pin_wait(self, cog_id: int) -> None:
-        """End cog ``cog_id``'s WAITPEQ/WAITPNE now, as if its condition had come true at cycle ``now``."""
+    def release_pin_wait(self, cog_id: int, t: Optional[int] = None) -> None:
+        """End cog ``cog_id``'s WAITPEQ/WAITPNE as if its condition had come true at cycle ``t`` (default ``now``)."""
         c = self.cogs[cog_id]
         if c.state != PIN_WAIT:
             raise ValueError(f"cog {cog_id} is not waiting on pins")
@@ -447,8 +453,12 @@ class Chip(Pins, Scheduler):
         self._pin_waiters.remove(c)
         c.pin_wait = None
         c.state = RUNNING
-        c.t = self.now + after
+        c.t = (self.now if t is None else t) + after
         self._cogs_changed = True
+
+    def pin_trace(self, until: Optional[int] = None):
+        """The :class:`~spinemu.trace.PinTrace` of the run so far (up to ``until``, default ``now``)."""
+        return self._build_trace(self.now if until is None else until)
 
     def _ff_stats(self) -> dict:
         return {"fast_forward": self.fast_forward, "busy_loops_learned": self._ff_loops,

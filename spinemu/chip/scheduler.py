@@ -273,6 +273,20 @@ class Scheduler:
     def _end_preemption(self) -> None:
         self.handlers[:] = self._handlers
         self._preempt = False
+        if self._halt_reason is not None:       # request_halt: stop here, at the start of a slice
+            reason, self._halt_reason = self._halt_reason, None
+            raise Halted(reason)
+
+    def request_halt(self, reason: str) -> None:
+        """Stop the run before the next bytecode that starts a scheduler slice (``advance`` returns ``reason``).
+
+        Call it from a handler whose bytecode ends its cog's slice (one that
+        raises :class:`~spinemu.chip.control.Reschedule`, such as a wait): the
+        run then stops at a point where every cog's state is complete.  It
+        rides on the preemption mechanism, so the fast loops check nothing new.
+        """
+        self._halt_reason = reason
+        self._request_preemption()
 
     def _learn(self, c: Cog, until: int) -> None:
         if self._tracking is None:
