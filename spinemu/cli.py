@@ -488,6 +488,50 @@ def cmd_sidebyside(args, out: _Out) -> int:
     return 0 if report.same_sequence else 1
 
 
+# ----------------------------------------------------------------------------- debug
+def cmd_debug(args, out: _Out) -> int:
+    """``spinemu debug PROG``: the debugger's command loop (spinemu.debugger.commands)."""
+    from .debugger.commands import CommandLoop
+    from .debugger.session import Debugger
+
+    if _kind(args.program) != "spin":
+        raise UsageError(f"'{args.program}' is not a .spin source (the debugger needs its names and lines)")
+    dbg = Debugger(args.program, list(args.include or ()), compat=_compat(args), inputs=args.inputs,
+                   warn=not args.no_warn, defines=list(args.define or ()))
+    loop = CommandLoop(dbg, out.console, echo=args.commands is not None)
+    loop.say(f"{args.program}: {len(dbg.program.binary)} bytes; cog 0 at {dbg.cog(0).place()} "
+             f"(help lists the commands)")
+    if args.commands is not None:
+        text = _read_bytes(args.commands).decode("utf-8", "replace")
+        loop.run_lines(text.splitlines())
+        return 0
+    import signal
+
+    old = signal.signal(signal.SIGINT, lambda *_: dbg.interrupt())
+    try:
+        loop.interactive(lambda prompt: out.console.input(prompt))
+    finally:
+        signal.signal(signal.SIGINT, old)
+    return 0
+
+
+def _add_debug_parser(sub) -> None:
+    d = sub.add_parser("debug", help="debug a Spin program: breakpoints, stepping, call stacks, variables",
+                       description="Run a Spin program under the debugger: step a cog by Spin line or "
+                                   "bytecode; stop on a line, a pin change, a write to a variable or a "
+                                   "condition; see every cog's call stack with parameters, locals and "
+                                   "results, and VAR/DAT by name. Type 'help' at the prompt.")
+    d.add_argument("program", metavar="PROG.spin")
+    d.add_argument("--commands", metavar="FILE",
+                   help="read the commands from FILE (one per line, '#' comments) instead of the terminal")
+    _obj_search_option(d)
+    _define_option(d)
+    d.add_argument("--compat", choices=["spinsim", "chip"], help="timing mode, as for run")
+    d.add_argument("--inputs", choices=["pulldown", "pullup"], help="what undriven pins read, as for run")
+    d.add_argument("--no-warn", action="store_true", help="no runtime warnings")
+    d.set_defaults(func=cmd_debug)
+
+
 # ----------------------------------------------------------------------------- parser
 def _obj_search_option(p) -> None:
     p.add_argument("-L", "-I", dest="include", action="append", metavar="DIR",
@@ -611,6 +655,7 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--right-clock", type=_positive_int, default=CLOCK_DEFAULT)
     s.add_argument("--steps", type=_positive_int, metavar="N", help="compare only the first N steps")
     s.set_defaults(func=cmd_sidebyside)
+    _add_debug_parser(sub)
     return p
 
 

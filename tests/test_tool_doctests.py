@@ -4,7 +4,8 @@ import importlib
 
 import pytest
 
-MODULES = ["spinemu.debuginfo", "spinemu.runtime_warnings", "spinemu.chip.checks", "spinemu.debugger.frames"]
+MODULES = ["spinemu.debuginfo", "spinemu.runtime_warnings", "spinemu.chip.checks", "spinemu.debugger.frames",
+           "spinemu.debugger.expr", "spinemu.debugger.commands"]
 
 
 @pytest.mark.parametrize("name", MODULES)

@@ -34,7 +34,7 @@ from .. import runtime_warnings as rw
 from .blocks import PROGRAM
 from .cog import STOPPED
 
-__all__ = ["RuntimeChecks", "program_code_ranges", "uninitialized_reads"]
+__all__ = ["RuntimeChecks", "program_code_ranges", "uninitialized_reads", "local_access", "write_size"]
 
 _MASK = 0xFFFFFFFF
 
@@ -394,7 +394,7 @@ class RuntimeChecks:
         """A write to a watched long: is it into the program's code?"""
         if not self.chip.watch[addr >> 2] & PROGRAM:
             return
-        size = _write_size(op)
+        size = write_size(op)
         a = addr & ~(size - 1)
         for start, end in self._code_ranges:
             if a < end and a + size > start:
@@ -413,7 +413,8 @@ class RuntimeChecks:
         return f"code at ${addr:04X}"
 
 
-def _write_size(op: int) -> int:
+def write_size(op: int) -> int:
+    """Bytes a hub write by bytecode ``op`` writes at once (1, 2 or 4)."""
     if 0x80 <= op <= 0xDF:
         return (1, 2, 4)[(op >> 5) & 3]
     if op in (0x18, 0x1C):

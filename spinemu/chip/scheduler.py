@@ -447,7 +447,8 @@ class Scheduler:
         """The instrumented twin of :meth:`_run_spin` for a probe (debugger, profiler).
 
         Runs ``c`` one bytecode at a time, exactly as the plain loop would
-        (same limit test, same handlers), and calls ``probe.before(chip, cog)``
+        (same limit test, same handlers, back to the scheduler after a
+        bytecode that changes what the cogs do), and calls ``probe.before(chip, cog)``
         before each and ``probe.after(chip, cog, pc, t)`` after it (``pc``,
         ``t``: where and when it started).  Either may raise
         :class:`~spinemu.chip.control.Halted` to stop the run between two
@@ -472,6 +473,8 @@ class Scheduler:
                     probe.after(self, c, pc, t)
                     return
                 probe.after(self, c, pc, t)
+                if self._cogs_changed:          # it started, stopped or parked a cog (Reschedule): so
+                    return                      # does the plain loop, and the scheduler looks again
         except Halted:
             if c.state == RUNNING:
                 self.now = c.t

@@ -123,6 +123,10 @@ class SpinCogView:
             if info is not None:
                 frame.instance = info.instance(pbase, vbase)
                 where = info.position(pc)
+                back = pc
+                while where is None and method is not None and back > method.start:
+                    back -= 1                       # the method's closing RETURN: its last line
+                    where = info.position(back)
                 if where is not None:
                     frame.path, frame.line, frame.col = where
             if method is not None:
