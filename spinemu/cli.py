@@ -277,6 +277,7 @@ def cmd_run(args, out: _Out) -> int:
         chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map,
                     warn=log if log is not None else False,
                     debug_info=prog.debug_info() if prog is not None else None)
+        profiler = _attach_profiler(chip, prog) if args.profile else None
         progress, update = _progress_callback(out, limit, clock, not args.no_progress)
         if progress is not None:
             with progress:
@@ -300,7 +301,69 @@ def cmd_run(args, out: _Out) -> int:
             rows.append(("trace", f"{args.trace} ({len(result.trace.changes)} changes)"))
         rows.extend(_runtime_warning_rows(getattr(result, "runtime_warnings", [])))
         out.print(_summary_table(result.trace, result.end_cycle, rows))
+    if args.engine != "python" and profiler is not None:
+        out.console.print(profiler.finish(args.target).table())
     return 0
+
+
+# ----------------------------------------------------------------------------- profile
+def _attach_profiler(chip, prog):
+    from .profiler import Profiler
+
+    profiler = Profiler(chip, prog.debug_info() if prog is not None else None)
+    chip.probe = profiler
+    return profiler
+
+
+def cmd_profile(args, out: _Out) -> int:
+    """``spinemu profile PROG``: cycles per line and method per cog (spinemu.profiler)."""
+    from .chip import Chip
+    from .image import ImageHeader
+
+    if _kind(args.target) == "pbasic":
+        raise UsageError("the profiler runs Propeller programs (.spin, .binary, .eeprom)")
+    image, source_map, prog = _load_target(args.target, args.include, args.define)
+    clock = ImageHeader.parse(image).clkfreq or CLOCK_DEFAULT
+    chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map,
+                debug_info=prog.debug_info() if prog is not None else None, warn=False)
+    profiler = _attach_profiler(chip, prog)
+    result = chip.run(max_cycles=_run_limit(args, clock))
+    profile = profiler.finish(args.target)
+    written = []
+    for path, text in ((args.json, profile.to_json), (args.csv, profile.to_csv), (args.listing, profile.listing)):
+        if path:
+            _write_atomic(path, text(), False)
+            written.append(path)
+    if not out.quiet:
+        out.console.print(f"{args.target}: {result.reason} at cycle {result.end_cycle:,}")
+        out.console.print(profile.table(args.top))
+        if written:
+            out.console.print("wrote " + ", ".join(written))
+    return 0
+
+
+def _add_profile_parser(sub) -> None:
+    p = sub.add_parser("profile", help="cycles per Spin line and per method, per cog (waits apart from work)",
+                       description="Run a program under the cycle profiler: every cycle of every cog is "
+                                   "charged to the Spin line (and method) of the bytecode that spent it, as "
+                                   "work or as waiting (WAITCNT, WAITPEQ/WAITPNE, WAITVID). Each cog's "
+                                   "figures add up to its running time. Compiled blocks and fast-forward are "
+                                   "off while profiling, so it runs slower than 'run'.")
+    p.add_argument("target", metavar="PROG", help=".spin source (lines and methods) or .binary/.eeprom image")
+    lim = p.add_mutually_exclusive_group()
+    lim.add_argument("--cycles", type=_positive_int, metavar="N", help="stop after N clock cycles")
+    lim.add_argument("--seconds", type=_positive_float, metavar="S", help="stop after S simulated seconds")
+    p.add_argument("--top", type=_positive_int, default=15, metavar="N", help="rows per table (default 15)")
+    p.add_argument("--json", metavar="FILE", help="write every figure as JSON")
+    p.add_argument("--csv", metavar="FILE", help="write one row per cog and line as CSV")
+    p.add_argument("--listing", metavar="FILE", help="write the sources annotated with each line's cycles")
+    _obj_search_option(p)
+    _define_option(p)
+    p.add_argument("--compat", choices=["spinsim", "chip"], help="timing mode, as for run")
+    p.add_argument("--inputs", choices=["pulldown", "pullup"], help="what undriven pins read, as for run")
+    p.add_argument("--input", dest="stimulus", metavar="SPEC", help="drive input pins, as for run")
+    p.add_argument("-q", "--quiet", action="store_true", help="print nothing (write the files only)")
+    p.set_defaults(func=cmd_profile)
 
 
 # ----------------------------------------------------------------------------- runtime warnings
@@ -595,6 +658,9 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--no-progress", action="store_true", help="no progress bar")
     r.add_argument("-q", "--quiet", action="store_true", help="no summary")
     _warning_options(r)
+    r.add_argument("--profile", action="store_true",
+                   help="also profile the run: cycles per Spin line and method per cog (slower; see "
+                        "'spinemu profile' for JSON, CSV and an annotated listing)")
     r.set_defaults(func=cmd_run)
 
     d = sub.add_parser("disasm", help="list an image: header, objects, bytecode, PASM",
@@ -656,6 +722,7 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--steps", type=_positive_int, metavar="N", help="compare only the first N steps")
     s.set_defaults(func=cmd_sidebyside)
     _add_debug_parser(sub)
+    _add_profile_parser(sub)
     return p
 
 
