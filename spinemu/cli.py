@@ -123,8 +123,7 @@ def cmd_compile(args, out: _Out) -> int:
     if _kind(args.source) != "spin":
         raise UsageError(f"'{args.source}' is not a .spin source file")
     prog = _compile(args.source, args.include, args.define)
-    for w in prog.warnings:
-        out.err_console.print(w.render() if hasattr(w, "render") else str(w), markup=False)
+    _print_hints(out, prog)
     target = args.output or os.path.splitext(args.source)[0] + ".binary"
     written = []
     if not args.eeprom or args.output:
@@ -258,6 +257,7 @@ def cmd_run(args, out: _Out) -> int:
     if args.timing or args.debug_in:
         raise UsageError("--timing and --debug-in apply to BASIC Stamp programs (.bs2) only")
     image, source_map, prog = _load_target(args.target, args.include, args.define)
+    _print_hints(out, prog)
     from .image import ImageHeader
 
     clock = ImageHeader.parse(image).clkfreq or CLOCK_DEFAULT
@@ -323,6 +323,7 @@ def cmd_profile(args, out: _Out) -> int:
     if _kind(args.target) == "pbasic":
         raise UsageError("the profiler runs Propeller programs (.spin, .binary, .eeprom)")
     image, source_map, prog = _load_target(args.target, args.include, args.define)
+    _print_hints(out, prog)
     clock = ImageHeader.parse(image).clkfreq or CLOCK_DEFAULT
     chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map,
                 debug_info=prog.debug_info() if prog is not None else None, warn=False)
@@ -364,6 +365,13 @@ def _add_profile_parser(sub) -> None:
     p.add_argument("--input", dest="stimulus", metavar="SPEC", help="drive input pins, as for run")
     p.add_argument("-q", "--quiet", action="store_true", help="print nothing (write the files only)")
     p.set_defaults(func=cmd_profile)
+
+
+# ----------------------------------------------------------------------------- compiler hints
+def _print_hints(out: _Out, prog) -> None:
+    """The compiler's hints (spinemu.compiler.hints) on stderr, file:line:col with a caret."""
+    for d in (prog.warnings if prog is not None else ()):
+        out.err_console.print(_render_error_diagnostic(d), markup=False, highlight=False)
 
 
 # ----------------------------------------------------------------------------- runtime warnings
@@ -561,6 +569,7 @@ def cmd_debug(args, out: _Out) -> int:
         raise UsageError(f"'{args.program}' is not a .spin source (the debugger needs its names and lines)")
     dbg = Debugger(args.program, list(args.include or ()), compat=_compat(args), inputs=args.inputs,
                    warn=not args.no_warn, defines=list(args.define or ()))
+    _print_hints(out, dbg.program)
     loop = CommandLoop(dbg, out.console, echo=args.commands is not None)
     loop.say(f"{args.program}: {len(dbg.program.binary)} bytes; cog 0 at {dbg.cog(0).place()} "
              f"(help lists the commands)")

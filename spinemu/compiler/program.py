@@ -16,6 +16,7 @@ from ..diagnostics import CompileError, Diagnostic
 from ..frontend.objects import load_program
 from ..frontend.source import SourceText
 from ..image import to_eeprom
+from .hints import program_hints
 from .link import link, total_var
 from .listing import format_listing
 from .objcode import ObjectCompiler
@@ -101,7 +102,8 @@ class CompiledProgram:
         binary: the ``.binary`` image (what OpenSpin writes with ``-b``).
         line_table: :class:`LineTable` from hub address to Spin source line.
         layout: the top object's :class:`InstanceLayout` (with its children).
-        warnings: diagnostics of severity "warning".
+        warnings: diagnostics of severity "warning": the compiler's hints (spinemu.compiler.hints),
+            things that compile but are rarely meant; they change no byte of the image.
         objects: the compiled objects in placement order.
     """
 
@@ -184,7 +186,8 @@ def _compile_unit(top_unit) -> CompiledProgram:
                                 s.pos.col))
     vbase = int.from_bytes(image[8:10], "little")
     layout = _instance_layout(top, "", addr, vbase, compiled)
-    return CompiledProgram(image, LineTable(entries), layout, [], placed, addr)
+    hints = program_hints(c.unit for c in compiled.values())
+    return CompiledProgram(image, LineTable(entries), layout, hints, placed, addr)
 
 
 def _sorted(errors: list) -> list:
