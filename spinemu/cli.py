@@ -394,7 +394,8 @@ def _runtime_warning_rows(warnings) -> list:
     """Summary rows: one per warning place, ``file:line: kind (N times)``."""
     rows = []
     for i, w in enumerate(warnings):
-        where = _short_path(w.path) + f":{w.line}" if w.path else f"cog {w.cog} at ${w.addr:04X}"
+        where = _short_path(w.path) + f":{w.line}" if w.path else f"cog {w.cog}" + (
+            f" at ${w.addr:04X}" if w.addr >= 0 else "")
         times = f" ({w.count} times)" if w.count > 1 else ""
         rows.append(("warnings" if i == 0 else "", f"{where}: {w.kind}{times}"))
     return rows

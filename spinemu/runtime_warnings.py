@@ -54,7 +54,7 @@ class RunWarning:
         kind: one of :data:`KINDS`.
         message: the text, in the user's words.
         cog: the cog that did it.
-        addr: hub address of the bytecode (or instruction) that did it.
+        addr: hub address of the bytecode (or instruction) that did it; -1 when the engine has none.
         cycle: when it happened first.
         path, line, column, source_line: the Spin place, when known.
         count: how many times this place did it.
@@ -74,7 +74,7 @@ class RunWarning:
     def diagnostic(self, severity: str = "warning") -> Diagnostic:
         """As a :class:`Diagnostic`: ``file:line:col: warning: ...`` with the source line and a caret."""
         text = f"{self.message} [cog {self.cog}, cycle {self.cycle:,}]"
-        if self.path is None:
+        if self.path is None and self.addr >= 0:
             text += f" (bytecode at ${self.addr:04X})"
         return Diagnostic(text, self.path or "<image>", self.line, self.column, self.source_line, severity)
 
@@ -130,17 +130,17 @@ class WarningLog:
         if kind not in self.enabled:
             return None
         where = None
-        if self.locate is not None:
+        if self.locate is not None and addr >= 0:
             try:
                 where = self.locate(addr & 0xFFFF)
             except Exception:  # a broken map must not hide the warning
                 where = None
-        place = (kind, tuple(where) if where else addr & 0xFFFF)
+        place = (kind, tuple(where) if where else (addr & 0xFFFF if addr >= 0 else ("cog", cog)))
         seen = self._places.get(place)
         if seen is not None:
             seen.count += 1
             return None
-        w = RunWarning(kind, message, cog, addr & 0xFFFF, cycle)
+        w = RunWarning(kind, message, cog, addr & 0xFFFF if addr >= 0 else -1, cycle)
         if where:
             w.path, w.line = where[0], where[1]
             w.column = where[2] if len(where) > 2 else None
@@ -169,10 +169,10 @@ def format_seconds(seconds: float) -> str:
     return f"{seconds * 1e6:.0f} us"
 
 
-def waitcnt_passed(target: int, late: int, stall: int, clock_hz: int, min_cycles: int) -> str:
+def waitcnt_passed(target: int, late: int, stall: int, clock_hz: int) -> str:
     """``waitcnt(target)`` issued ``late`` cycles after the target: the cog stalls ``stall`` cycles.
 
-    >>> print(waitcnt_passed(80_000, 1_200_000, 4_293_847_296, 80_000_000, 381))  # doctest: +NORMALIZE_WHITESPACE
+    >>> print(waitcnt_passed(80_000, 1_200_000, 4_293_847_296, 80_000_000))  # doctest: +NORMALIZE_WHITESPACE
     waitcnt for a count that passed 1,200,000 cycles ago: the cog stalls 53.67 s (4,293,847,296 cycles
     at 80 MHz) until CNT comes round again; the target 80,000 looks like a delay, not a time: is '+ cnt'
     missing?
@@ -183,8 +183,8 @@ def waitcnt_passed(target: int, late: int, stall: int, clock_hz: int, min_cycles
             f"({stall:,} cycles at {mhz}) until CNT comes round again; ")
     if target < late:
         return text + f"the target {target:,} looks like a delay, not a time: is '+ cnt' missing?"
-    return text + (f"the delay is shorter than the code before the wait (at least {min_cycles} cycles "
-                   f"from reading CNT; with 'c += delay', the loop takes longer than the delay)")
+    return text + ("the delay is shorter than the code between reading CNT (or the last target) and "
+                   "this wait; in a 'c += delay' loop, the loop takes longer than the delay")
 
 
 def stack_overflow(cog: int, array: str, where: str, array_addr: int, array_bytes: int, method: str,

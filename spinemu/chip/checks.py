@@ -237,7 +237,8 @@ class RuntimeChecks:
         return self.log.wants(kind)
 
     def _where(self, c) -> int:
-        return (c.pc - 1) & 0xFFFF
+        """The bytecode a Spin cog is executing; -1 for a cog another engine runs (no bytecode address)."""
+        return (c.pc - 1) & 0xFFFF if c.engine == "spin" else -1
 
     def _warn(self, kind: str, message: str, c, addr: int, t: int) -> None:
         self.log.warn(kind, message, c.id, addr, t)
@@ -369,7 +370,7 @@ class RuntimeChecks:
         T = self.chip.timing
         late = (-wait) & _MASK
         stall = wait + T.waitcnt_min
-        self._warn("waitcnt-passed", rw.waitcnt_passed(target, late, stall, self.clock_hz, T.waitcnt_min),
+        self._warn("waitcnt-passed", rw.waitcnt_passed(target, late, stall, self.clock_hz),
                    c, self._where(c), t)
 
     # ------------------------------------------------------------------ pins

@@ -180,3 +180,15 @@ def test_a_pasm_cog_is_shown_but_not_stepped():
     assert view.kind == "other" and "pasm" in view.place()
     with pytest.raises(DebugError, match="cannot step it yet"):
         dbg.step(cog=1)
+
+
+def test_the_documented_session_prints_what_the_docs_show(update_golden, monkeypatch):
+    monkeypatch.chdir(ROOT)                          # the transcript shows paths relative to the project
+    script = ROOT / "docs" / "examples" / "debug_demo.txt"
+    golden = ROOT / "docs" / "examples" / "debug_demo.out"
+    out, err = io.StringIO(), io.StringIO()
+    assert main(["debug", "spin_src/corrected/stepper_demo.spin", "--commands", str(script)], out, err) == 0
+    if update_golden:
+        golden.write_text(out.getvalue())
+    assert out.getvalue() == golden.read_text()
+    assert golden.read_text() in (ROOT / "docs" / "debugger.md").read_text()
