@@ -11,7 +11,7 @@ that makes none of these mistakes runs at the same speed with the checks on:
   names (then the end of that array).
 * ``no-free-cog``: COGINIT, when it finds no stopped cog.
 * ``pin-conflict``: after a cog changes DIRA/OUTA (already the slow path
-  that records pin changes).
+  that records pin changes; ``Chip.pin_hooks``).
 * ``write-outside-hub``: the hub-write paths' existing ``addr < $8000``
   test gets an ``else``.
 * ``write-into-code``: the longs holding object tables and method code get
@@ -253,9 +253,9 @@ class RuntimeChecks:
             for start, end in self._code_ranges:
                 for k in range(start >> 2, ((end - 1) >> 2) + 1):
                     watch[k] |= PROGRAM
-            chip.write_listeners.append(self.on_watched_write)
+            chip.write_hooks.append(self.on_watched_write)
         if self.wants("pin-conflict"):
-            chip.pin_listeners.append(self.on_pins)
+            chip.pin_hooks.append(self.on_pins)
         if self.wants("uninitialized") and self.info is not None:
             self._find_uninitialized()
 

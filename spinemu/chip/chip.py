@@ -7,8 +7,8 @@ and cog 0 starts the ROM's Spin interpreter on the first method.  Time is one
 32-bit system counter (CNT) shared by all cogs; each cog keeps the cycle at
 which it starts its next bytecode, and the scheduler (:mod:`.scheduler`)
 always advances the cog whose next hub access comes first, jumping over time
-in which every cog waits.  Pins are in :mod:`.pins`, the interpreter in
-:mod:`.spin`.
+in which every cog waits.  Pins are in :mod:`.pins`, live pin listeners in
+:mod:`.listen`, the interpreter in :mod:`.spin`.
 
 Two compatibility modes (``compat``):
 
@@ -40,6 +40,7 @@ from ..trace import PinTrace
 from .blocks import HOT as BLOCK_THRESHOLD
 from .cog import PARKED, PIN_WAIT, RUNNING, STOPPED, IDLE_PASM, Cog
 from .control import CogStopped, Halted, Reschedule
+from .listen import Listeners
 from .pins import Pins
 from .registers import Registers
 from .scheduler import NEVER, Scheduler
@@ -55,6 +56,8 @@ COMPAT_MODES = ("chip", "spinsim")
 COG_LOAD_CYCLES = 496 * 16 + 16
 _SPINSIM_START_CYCLES = -4          # spinsim: first instruction in the COGINIT's last cycle
 _NEVER = NEVER
+#: run endings after which no pin can change again
+_FINAL_REASONS = ("all cogs stopped", "deadlock", "stalled")
 
 
 @dataclass
@@ -86,7 +89,7 @@ class RunResult:
     runtime_warnings: list = field(default_factory=list)
 
 
-class Chip(Pins, Scheduler):
+class Chip(Pins, Listeners, Scheduler):
     """A Propeller 1 running one image.
 
     Args:
@@ -157,10 +160,11 @@ class Chip(Pins, Scheduler):
         self.watch = bytearray(0x10000 >> 2)
         self._parked: list = []
         self.debug_info = debug_info
-        #: called as f(cog, cycle) after a cog changes its pins; f(cog, hub_addr, op, cycle) before a
-        #: write to a long with a PROGRAM or WATCHPOINT watch bit (runtime checks, debuggers)
-        self.pin_listeners: list = []
-        self.write_listeners: list = []
+        #: called as f(cog, cycle) right after a cog changes its DIRA/OUTA (before other cogs run);
+        #: f(cog, hub_addr, op, cycle) before a write to a long with a PROGRAM or WATCHPOINT watch bit
+        #: (runtime checks, debuggers; the bench's live listeners are pin_listeners, listen.py)
+        self.pin_hooks: list = []
+        self.write_hooks: list = []
         #: bytecode addresses no compiled block may start at or run through; calls stay interpreted
         self.interpret_only: set = set()
         self.interpret_calls = False
@@ -179,6 +183,7 @@ class Chip(Pins, Scheduler):
         self._preempt = False
         self._halt_reason = None
         self.pin_events: list = []          # (cycle, seq, cog, dira, outa, running)
+        self._init_listeners()              # live pin listeners (listen.py)
         self.cog_events: list = []
         self.warnings: list = []
         self._seq = 0
@@ -404,6 +409,8 @@ class Chip(Pins, Scheduler):
             for c in self.cogs:
                 if c.state != STOPPED:
                     self.counters.flush(c, end)
+        if self.pin_listeners:      # pins nothing can change any more stay as they are for ever
+            self._deliver_pins(_NEVER if reason in _FINAL_REASONS else end + 1, end + 1)
         trace = self._build_trace(end)
         per_cog = {c.id: c.bytecodes for c in self.cogs if c.bytecodes}
         stats = {"bytecodes": sum(per_cog.values()), "bytecodes_per_cog": per_cog,

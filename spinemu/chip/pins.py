@@ -7,6 +7,7 @@ cycle of the interpreter instruction that writes the register + 4; the
 record is sorted and folded into a :class:`spinemu.trace.PinTrace` at the end
 of the run (cogs may run slightly out of time order).  INA reads driven pins
 as driven and the others from the input model (:mod:`spinemu.chip.inputs`).
+Live pin listeners (the bench's view of a run) are in :mod:`.listen`.
 """
 from __future__ import annotations
 
@@ -51,13 +52,13 @@ class Pins:
     def note_pins(self, c: Cog, t: int) -> None:
         """Cog ``c`` changed DIRA, OUTA or a counter at cycle ``t`` (the pins change then).
 
-        ``pin_listeners`` (runtime checks, a debugger) are called as ``f(c, t)`` afterwards.
+        ``pin_hooks`` (runtime checks, a debugger) are called as ``f(c, t)`` afterwards.
         """
         self.record_cog_pins(c, t)
         if self._pin_waiters:
             self._wake_pin_waiters(t)
-        if self.pin_listeners:
-            for f in self.pin_listeners:
+        if self.pin_hooks:
+            for f in self.pin_hooks:
                 f(c, t)
 
     def wait_pins(self, c: Cog, mask: int, state: int, equal: bool, tf: int) -> int:

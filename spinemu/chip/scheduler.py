@@ -75,6 +75,7 @@ class Scheduler:
         run = self._run_spin_traced if traced else self._run_spin_probed if probed else self._run_plain
         running: list = []
         generic = False
+        listening = bool(self.pin_listeners)
         while True:
             if self._cogs_changed:
                 self._cogs_changed = False
@@ -95,11 +96,20 @@ class Scheduler:
                 elif c2 is None or key < ck2:
                     c2, ck2 = k, key
             ext = self._next_external(limit) if self._pin_waiters else None
+            if listening:
+                now = ck if c is not None else ext
+                if now is not None and now >= self._listen_at:
+                    self._listen(running, ext, now,
+                                 ck + 1 if c is not None else max(self.now, self._ext_seen) + 1)
+                    if self._pin_waiters:       # a listener may have added input changes
+                        ext = self._next_external(limit)
             if ext is not None and (c is None or ext <= c.t):
                 self.now = self._ext_seen = ext         # an input edge or a counter edge
                 self._wake_pin_waiters(ext)
                 continue
             if c is None:
+                if self._halt_reason is not None:   # a halt was asked for: stop before time is stepped
+                    self._end_preemption()
                 if self._parked and not self._pin_waiters:
                     if limit >= _NEVER:
                         return "stalled"
@@ -107,6 +117,8 @@ class Scheduler:
                         self._unpark(p, limit)
                     continue
                 if self._pin_waiters:           # nothing can change the pins they wait on
+                    if listening and self._idle_listen(limit):
+                        continue                # ... unless a pin listener sends something
                     if limit < _NEVER:
                         self.now = limit
                         return "cycle limit"
@@ -131,6 +143,8 @@ class Scheduler:
                     until = limit
             if ext is not None and ext < until:
                 until = ext
+            if listening and until > self._listen_at:
+                until = self._listen_at         # back here in time to tell the pin listeners
             self.now = t
             try:
                 if generic and c.engine.__class__ is not str:
@@ -245,7 +259,7 @@ class Scheduler:
     def watch_hit(self, writer: Cog, hub_addr: int, t: int, op: int) -> None:
         """``writer``'s bytecode ``op``, started at ``t``, is about to write a watched hub long.
 
-        ``write_listeners`` (runtime checks, debugger watchpoints) are told
+        ``write_hooks`` (runtime checks, debugger watchpoints) are told
         first, as ``f(writer, hub_addr, op, t)``, when the long carries one of
         their bits.  A parked cog that reads the long is brought up to ``t``
         (it reads the old value, as it would have), and the writer's run loop
@@ -253,7 +267,7 @@ class Scheduler:
         the two cogs again.
         """
         if self.watch[hub_addr >> 2] & _OBSERVED:
-            for f in self.write_listeners:
+            for f in self.write_hooks:
                 f(writer, hub_addr, op, t)
         woke = False
         tf = t + 12

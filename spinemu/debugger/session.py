@@ -13,7 +13,7 @@ What can stop a run (each a :class:`Breakpoint`):
 * a **line** (``file:line``, ``line``, ``method`` or ``object.method``):
   before the first bytecode of each run of bytecode the line compiled to;
 * a **pin change** (``pin N``): after the bytecode that changed the pin's
-  direction or level (pin listeners of the chip);
+  direction or level (the chip's pin hooks);
 * a **watchpoint** on a VAR/DAT variable (``watch NAME``): after a bytecode
   that wrote any of its bytes (the chip's ``watch`` bits: writes to watched
   longs already leave the fast path);
@@ -144,8 +144,8 @@ class Debugger:
         self.chip = Chip(self.program.binary, compat=compat, inputs=inputs, debug_info=self.info, warn=warn,
                          fast_forward=False, compile_blocks=False)
         self.chip.probe = self
-        self.chip.pin_listeners.append(self._on_pins)
-        self.chip.write_listeners.append(self._on_write)
+        self.chip.pin_hooks.append(self._on_pins)
+        self.chip.write_hooks.append(self._on_write)
         self.breakpoints: list = []
         self.selected = 0           # the cog step/next/finish/print follow
         self.frame_index = 0        # the frame of the selected cog that print/list look at

@@ -6,7 +6,7 @@
 -1
 
 :func:`load` gives a :class:`SpinBench` (``call``, ``run``, ``var``/``set_var``,
-``pins``, ``trace``, ``where``); :mod:`spinemu.testing.plugin` is the pytest
+``pins``, ``trace``, ``where``, ``console``); :mod:`spinemu.testing.plugin` is the pytest
 plugin with the ``spin`` fixture.  See docs/testing.md.
 """
 from .bench import CallTimeout, HarnessError, SpinAbort, SpinBench, load

@@ -93,7 +93,7 @@ def _generate(obj_name: str, methods: list, clock_hz: int) -> str:
 
 
 def load(path, include_dirs=(), *, compat: str = "spinsim", inputs=None, clock_hz: int = 80_000_000,
-         call_limit: Optional[int] = None, warn=True, defines=()) -> "SpinBench":
+         call_limit: Optional[int] = None, warn=True, defines=(), console=None) -> "SpinBench":
     """Compile the Spin object ``path`` under a generated parent and start the chip.
 
     Args:
@@ -105,6 +105,8 @@ def load(path, include_dirs=(), *, compat: str = "spinsim", inputs=None, clock_h
         call_limit: cycles a call may take before :class:`CallTimeout` (default: one second).
         warn: runtime warnings (``True``, ``False`` or a ``WarningLog``); see ``SpinBench.warnings``.
         defines: names for ``#ifdef``.
+        console: a :class:`spinemu.bench.SerialConsole` to attach (``True``: one on P30/P31 at
+            115200 baud); ``SpinBench.console`` then has the text the object sent.
 
     Raises:
         SpinError: the object does not compile (file:line:col of the problem).
@@ -124,7 +126,7 @@ def load(path, include_dirs=(), *, compat: str = "spinsim", inputs=None, clock_h
     text = _generate(name, methods, clock_hz)
     prog = compile_source(text, HARNESS_NAME, include_dirs=[folder, *include_dirs], defines=defines)
     return SpinBench(prog, path, methods, compat=compat, inputs=inputs, warn=warn,
-                     call_limit=call_limit or clock_hz)
+                     call_limit=call_limit or clock_hz, console=console)
 
 
 class SpinBench:
@@ -139,7 +141,8 @@ class SpinBench:
         path: the object's source file.
     """
 
-    def __init__(self, program, path: str, methods: list, *, compat: str, inputs, warn, call_limit: int):
+    def __init__(self, program, path: str, methods: list, *, compat: str, inputs, warn, call_limit: int,
+                 console=None):
         from ..chip import Chip
 
         self.program = program
@@ -158,6 +161,11 @@ class SpinBench:
         self._returned_at: Optional[int] = None
         self._idle_pc = self._find_idle()
         self.chip.wrap_handler(_WAITPNE, self._idle_hook(self.chip.handlers[_WAITPNE]))
+        self._console = None
+        if console is not None and console is not False:
+            from ..bench import SerialConsole
+            self._console = SerialConsole() if console is True else console
+            self._console.attach(self.chip)
         self._go(self.call_limit, "the harness did not reach its idle wait")
 
     # ------------------------------------------------------------------ set-up
@@ -353,10 +361,17 @@ class SpinBench:
         return self.chip.pin_trace(self.now)
 
     @property
-    def console(self) -> str:
-        """Serial text the object sent (not available yet: it comes with spinemu's serial console)."""
-        raise HarnessError("the serial console is not part of this version of spinemu yet; "
-                           "decode the pins from bench.trace meanwhile")
+    def console(self):
+        """The :class:`spinemu.bench.SerialConsole` given to :func:`load` (``.text``, ``.data``, ``.send``).
+
+        Its text is brought up to the bench's present first.
+        """
+        if self._console is None:
+            raise HarnessError("no serial console on this bench: load(path, console=True) attaches one "
+                               "on P30/P31 (or pass a spinemu.bench.SerialConsole)", path=self.path)
+        if self.chip.pin_listeners:
+            self.chip._deliver_pins(self.now, self.now)     # the live pin listeners, up to now
+        return self._console
 
     @property
     def warnings(self) -> list:

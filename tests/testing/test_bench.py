@@ -8,6 +8,7 @@ from spinemu.testing import CallTimeout, HarnessError, SpinAbort
 
 CALC = Path(__file__).parent.parent / "data" / "testing" / "calc.spin"
 STEPPER = Path(__file__).parent.parent.parent / "spin_src" / "corrected" / "stepper.spin"
+SERIAL = Path(__file__).parent.parent.parent / "spin_src" / "examples" / "bitbang_serial.spin"
 
 pytest_plugins = ["pytester"]
 
@@ -130,9 +131,21 @@ def test_where_tells_what_each_cog_is_doing(calc):
     assert lines[1].startswith("cog 1 (") and "watch() at" in lines[1] and "calc.spin:4" in lines[1]
 
 
-def test_the_console_is_not_there_yet_and_says_so(calc):
-    with pytest.raises(HarnessError, match="serial console"):
+def test_without_a_console_the_bench_says_how_to_attach_one(calc):
+    with pytest.raises(HarnessError, match="console=True"):
         calc.console
+
+
+def test_the_serial_console_reads_what_the_object_sends_and_sends_it_input():
+    from spinemu.bench import SerialConsole
+
+    port = spinemu.testing.load(SERIAL, console=SerialConsole(tx=30, rx=31, baud=9600))
+    port.call("start", 31, 30, 9600)
+    port.call("str", "Hi ")
+    port.call("dec", -42)
+    assert port.console.text == "Hi -42"
+    port.console.send(b"123\r", at_cycle=port.now + 20_000)     # once getdec waits for it
+    assert port.call("getdec") == 123
 
 
 def test_a_missing_file_or_a_broken_object_is_a_spin_error(tmp_path):
