@@ -29,7 +29,7 @@ PASM runs.
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Optional
 
 from ..chip.blocks import WATCHPOINT
