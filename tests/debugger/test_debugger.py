@@ -118,8 +118,8 @@ def test_print_set_and_list_in_the_selected_frame(tmp_path):
 
 
 def test_until_runs_to_a_line_and_run_lets_time_pass(tmp_path):
-    out = session(tmp_path, "until stepper_demo.spin:48\ntime\nrun 1ms\ntime\n")
-    assert "cog 0 at spin_src/corrected/stepper_demo.spin:48 in main" in after(out, "until stepper_demo.spin:48")
+    out = session(tmp_path, "until stepper_demo.spin:43\ntime\nrun 1ms\ntime\n")
+    assert "cog 0 at spin_src/corrected/stepper_demo.spin:43 in main" in after(out, "until stepper_demo.spin:43")
     t1 = int(after(out, "time").split()[1].replace(",", ""))
     t2 = int(out.rsplit("(spin) time\n", 1)[1].split()[1].replace(",", ""))
     assert t2 - t1 == 80_000
