@@ -7,6 +7,7 @@ floating-point model of AccelStepper's algorithm (tests/accel/accel_model.py).
 """
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -77,12 +78,16 @@ def test_the_manuals_table_comes_out_of_the_trace(demo, second):
     assert int(demo.motion.speed_at(t)) == speed       # the manual prints whole steps/s
 
 
-def test_the_speed_at_each_second_is_ahead_of_acceleration_times_time(demo):
-    # 53.4, 103.2, 153.5 rather than 50, 100, 150: the interval that contains second k is
-    # the one computed for the next step, and Austin's ramp runs ahead of v = a t.
-    for second in (1, 2, 3):
-        v = demo.motion.speed_at(demo.t0 + second)
-        assert 50 * second + 3 < v < 50 * second + 4
+def test_the_ramp_runs_67_ms_ahead_of_an_exact_one_which_makes_53_and_not_50(demo):
+    # the first step comes c0 = 0.676 sqrt(2/a) = 135.2 ms after the move starts (plus the
+    # Spin code of moveTo), not sqrt(2/a) = 200 ms; every later step keeps that lead
+    first = demo.motion.steps[0].time - demo.t0
+    assert 0.1352 < first < 0.1362
+    for second, n in ((1, 28), (2, 106), (3, 235)):
+        step = demo.motion.steps[n - 1].time - demo.t0
+        lead = math.sqrt(2 * n / 50) - step
+        assert 0.066 < lead < 0.068
+        assert int(demo.motion.speed_at(demo.t0 + second)) == int(50 * (second + lead))
 
 
 def test_every_step_of_the_demo_is_where_the_floating_point_algorithm_puts_it(demo, demo_model):

@@ -67,3 +67,18 @@ def test_a_ramp_keeps_a_motor_in_step_that_the_columns_fixed_speed_start_stalls(
     assert [s.followed for s in fixed.steps[:3]] == [True, False, False]
     assert [s.followed for s in fixed.steps[47:50]] == [True, False, False]
     assert len(fixed.missed) == 93 and fixed.position == 0 and fixed.commanded == -1
+
+
+def test_the_readme_commands_run_the_demo_and_judge_it(tmp_path):
+    import io
+
+    from spinemu.cli import main
+
+    log = tmp_path / "coils.log"
+    out, err = io.StringIO(), io.StringIO()
+    assert main(["run", str(ROOT / "spin_src" / "accel" / "coils_demo.spin"), "--trace", str(log)], out, err) == 0
+    out = io.StringIO()
+    assert main(["trace", "steps", str(log), "--pins", "1..4", "--pull-in", "150"], out, err) == 0
+    text = out.getvalue()
+    assert "(full-step (two-coil)), net +0 full steps" in text
+    assert "motor: 1440 steps asked for, 0 missed" in text
