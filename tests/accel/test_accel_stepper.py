@@ -183,3 +183,59 @@ PUB main
     assert [s.delta for s in motion.steps] == [-0.5] * 20 and motion.position == -10
     for a, b in zip(motion.steps, motion.steps[1:]):
         assert b.time - a.time == pytest.approx(1 / 62.5, rel=1e-4)
+
+
+READBACK = """CON
+  _clkmode = xtal1 + pll16x
+  _xinfreq = 5_000_000
+VAR
+  long results[32]
+OBJ
+  motor : "AccelStepper"
+PUB main | i
+  motor.startStepDir(0, 1)
+  motor.setMaxSpeed(200)
+  motor.setAcceleration(50)
+  results[0] := motor.speed
+  results[1] := motor.run                              ' nowhere to go
+  motor.moveTo(100)
+  results[2] := motor.distanceToGo
+  results[3] := motor.targetPosition
+  results[4] := motor.run                              ' on its way
+  repeat while motor.currentPosition < 28
+    motor.run
+  results[5] := motor.speed
+  results[6] := motor.speedFx
+  motor.setCurrentPosition(500)
+  results[7] := motor.currentPosition
+  results[8] := motor.speed
+  results[9] := motor.distanceToGo
+  results[10] := motor.isRunning
+  motor.setSpeedF(-2.5)
+  results[11] := motor.speedFx
+  results[12] := motor.stepInterval
+  motor.setAccelerationF(0.25)
+  results[13] := motor.accelerationFx
+  motor.move(-7)
+  results[14] := motor.targetPosition
+{floats}
+"""
+
+
+def test_what_the_object_reports(tmp_path):
+    # whole, float and 16.16 arguments read back; speed() truncates toward zero
+    floats = [0.01, 0.5, 12.5, 37.75, 1000.125, 32767.0, 1.0e6, -3.25]
+    lines = "".join(f"  motor.setMaxSpeedF({v!r})\n  results[{16 + i}] := motor.maxSpeedFx\n"
+                    for i, v in enumerate(floats))
+    src = tmp_path / "readback.spin"
+    src.write_text(READBACK.replace("{floats}", lines))
+    prog, result = run_program(src, seconds=5)
+    vbase = int.from_bytes(prog.binary[8:10], "little")
+    got = [int.from_bytes(result.hub[vbase + 4 * i: vbase + 4 * i + 4], "little", signed=True) for i in range(32)]
+    assert got[:5] == [0, 0, 100, 100, -1]
+    assert got[5] == 53 and got[6] / 65536 == pytest.approx(53.38, abs=0.01)
+    assert got[7:11] == [500, 0, 0, 0]
+    assert got[11] == -163_840 and got[12] == 32_000_000          # -2.5 steps/s: 0.4 s = 32M ticks
+    assert got[13] == 16_384 and got[14] == 493
+    want = [min(int(abs(v) * 65536), 0x7FFF_0000) for v in floats]
+    assert got[16:16 + len(floats)] == want
