@@ -481,6 +481,16 @@ def cmd_sidebyside(args, out: _Out) -> int:
 
 
 # ----------------------------------------------------------------------------- parser
+_TRACE_DESCRIPTIONS = {
+    "steps": "Decode a stepper motor's steps from a trace log: four coil pins in table order (--pins) "
+             "or a step/direction driver (--step-dir STEP,DIR). Prints the runs at one speed and the "
+             "first steps. --pull-in and --plot run the steps through the bench's stepper motor "
+             "(docs/stepper_motor.md): the steps a motor with that pull-in rate misses, and position, "
+             "speed and acceleration against time. --start/--end (cycles) limit the listed steps and the plot "
+             "to a window (the motor runs through the whole trace).",
+}
+
+
 def _obj_search_option(p) -> None:
     p.add_argument("-L", "-I", dest="include", action="append", metavar="DIR",
                    help="add a folder to search for OBJ files (after the source's own folder)")
@@ -576,7 +586,7 @@ def build_parser() -> argparse.ArgumentParser:
     for name, help_ in (("show", "timeline of the pins in the terminal"), ("plot", "waveform plot to an image file"),
                         ("convert", "convert a log to VCD"),
                         ("steps", "decode stepper coil patterns or step/dir pulses into steps")):
-        a = ts.add_parser(name, help=help_, parents=[clock])
+        a = ts.add_parser(name, help=help_, parents=[clock], description=_TRACE_DESCRIPTIONS.get(name, help_))
         a.add_argument("file")
         if name in ("plot", "convert"):
             a.add_argument("-o", "--output", required=True, metavar="FILE")
