@@ -267,6 +267,8 @@ def cmd_run(args, out: _Out) -> int:
     if args.engine == "python":
         if kind != "spin":
             raise UsageError("--engine python needs a .spin source (it translates the source)")
+        if args.trace_cog:
+            raise UsageError("--trace-cog works with the bytecode engine (leave out --engine python)")
         from .translate import run_translated
 
         result = run_translated(args.target, include_dirs=list(args.include or ()), max_cycles=limit,
@@ -274,13 +276,17 @@ def cmd_run(args, out: _Out) -> int:
     else:
         from .chip import Chip
 
-        chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map)
-        progress, update = _progress_callback(out, limit, clock, not args.no_progress)
-        if progress is not None:
-            with progress:
-                result = chip.run(max_cycles=limit, progress=update)
-        else:
-            result = chip.run(max_cycles=limit)
+        chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map,
+                    labels=prog.dat_labels() if prog is not None else None)
+        with _pasm_trace_sink(args, out) as sink:
+            for cog_id in args.trace_cog or ():
+                chip.trace_cog(cog_id, sink)
+            progress, update = _progress_callback(out, limit, clock, not args.no_progress)
+            if progress is not None:
+                with progress:
+                    result = chip.run(max_cycles=limit, progress=update)
+            else:
+                result = chip.run(max_cycles=limit)
     wall = time.perf_counter() - t0
     _write_trace(args, result.trace)
     if args.dump_hub:
@@ -294,10 +300,46 @@ def cmd_run(args, out: _Out) -> int:
         rows = [("ended", result.reason),
                 ("cogs", f"{started} started, {stopped} stopped"),
                 ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
+        rows += _pasm_rows(result)
         if args.trace:
             rows.append(("trace", f"{args.trace} ({len(result.trace.changes)} changes)"))
         out.print(_summary_table(result.trace, result.end_cycle, rows))
     return 0
+
+
+def _pasm_rows(result) -> list:
+    """Summary rows for the PASM cogs a run started: where, and how many instructions they ran."""
+    counts = result.stats.get("pasm_instructions_per_cog", {})
+    rows = []
+    for cycle, cog_id, kind, detail in result.cog_events:
+        if kind == "start" and detail.startswith("PASM"):
+            rows.append((f"cog {cog_id}", f"{detail} at cycle {cycle:,}"))
+    if counts:
+        rows.append(("PASM", ", ".join(f"cog {k}: {n:,} instructions" for k, n in sorted(counts.items()))))
+    return rows
+
+
+class _pasm_trace_sink:
+    """``--trace-cog``: a callback writing one line per PASM instruction to the chosen file (or stdout)."""
+
+    def __init__(self, args, out: "_Out"):
+        self.path = getattr(args, "trace_cog_file", None) if getattr(args, "trace_cog", None) else None
+        self.stream = out.stdout
+        self.file = None
+
+    def __enter__(self):
+        if self.path and self.path != "-":
+            try:
+                self.file = self.stream = open(self.path, "w", encoding="utf-8")
+            except OSError as e:
+                raise UsageError(f"cannot write '{self.path}': {e.strerror}") from None
+        write = self.stream.write
+        return lambda step: write(step.text() + "\n")
+
+    def __exit__(self, *exc):
+        if self.file is not None:
+            self.file.close()
+        return False
 
 
 _PBASIC_REASONS = {"end": "END statement", "stop": "STOP statement", "time": "time limit",
@@ -550,6 +592,11 @@ def build_parser() -> argparse.ArgumentParser:
                    help="bytecode: interpret the compiled image (default); python: run the Spin-to-Python translation")
     r.add_argument("--timing", choices=["exact", "realistic"],
                    help="BASIC Stamp only: exact command durations, or with per-instruction interpreter time")
+    r.add_argument("--trace-cog", type=int, action="append", choices=range(8), metavar="N",
+                   help="log every PASM instruction cog N executes: cycle, address, disassembly, flags after it "
+                        "and the value written (repeatable; bytecode engine only)")
+    r.add_argument("--trace-cog-file", metavar="FILE", default="-",
+                   help="where --trace-cog writes its log (default: standard output)")
     r.add_argument("--no-progress", action="store_true", help="no progress bar")
     r.add_argument("-q", "--quiet", action="store_true", help="no summary")
     r.set_defaults(func=cmd_run)

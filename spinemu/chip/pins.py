@@ -52,7 +52,7 @@ class Pins:
         """Cog ``c`` changed DIRA, OUTA or a counter at cycle ``t`` (the pins change then)."""
         self.record_cog_pins(c, t)
         if self._pin_waiters:
-            self._wake_pin_waiters(t)
+            self._wake_pin_waiters(t, c)
 
     def wait_pins(self, c: Cog, mask: int, state: int, equal: bool, tf: int) -> int:
         issue, after = self.timing.waitpin[equal]
@@ -66,21 +66,23 @@ class Pins:
         self._ext_seen = max(self._ext_seen, t)
         raise Reschedule(_NEVER - tf)
 
-    def _wake_pin_waiters(self, t: int) -> None:
+    def _wake_pin_waiters(self, t: int, writer=None) -> None:
         """Resume the cogs whose WAITPEQ/WAITPNE condition holds at cycle ``t``.
 
-        Called from inside another cog's bytecode (a pin write), it also
-        preempts that cog's run loop, so the scheduler sees the woken cog.
+        Called from inside another cog's instruction (``writer``'s pin write),
+        it also preempts that cog's run loop, so the scheduler sees the woken
+        cog.  A Spin waiter resumes a fixed time after ``t``; a PASM waiter
+        (``after`` None) at its next poll (:meth:`PasmEngine.wake_time`).
         """
         woke = False
         for c in list(self._pin_waiters):
             mask, state, equal, after = c.pin_wait
             if ((self.ina(t) & mask) == state) == equal:
                 self._pin_waiters.remove(c)
+                c.t = t + after if after is not None else c.engine.wake_time(c, t, writer)
                 c.pin_wait = None
                 c.state = RUNNING
                 self._cogs_changed = True
-                c.t = t + after
                 woke = True
         if woke:
             self._request_preemption()

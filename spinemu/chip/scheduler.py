@@ -14,7 +14,7 @@ event leaves it by exception, see :mod:`spinemu.chip.control`).
 from __future__ import annotations
 
 from .blocks import BUSY, BlockCompiler
-from .cog import PARKED, RUNNING, IDLE_PASM, Cog
+from .cog import PARKED, RUNNING, Cog
 from .control import CogStopped, Preempted, RebootRequested, Reschedule
 from .fastforward import INTERRUPTED, LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
 
@@ -57,13 +57,16 @@ class Scheduler:
     def _schedule(self, limit: int, progress) -> str:
         """Advance the cog furthest behind until every cog stopped or ``limit``. (Hot loop.)
 
-        A cog whose ``engine`` is an object rather than a name (the Python
-        engine of :mod:`spinemu.translate`) is run by ``engine.run(cog,
-        until)``, which must advance ``cog.t`` (or stop the cog) as the
-        bytecode loop does; its next access comes from :meth:`_key`.
+        A cog whose ``engine`` is an object rather than a name (the PASM
+        engine of :mod:`.pasm_cog`, the Python engine of
+        :mod:`spinemu.translate`) is run by ``engine.run(cog, until)``, which
+        must advance ``cog.t`` (or stop the cog) as the bytecode loop does
+        and may not perform a shared access at or after ``until``; its next
+        access comes from :meth:`_key`.
         """
         cogs = self.cogs
         mem, acc = self.mem, self.access_at
+        self.run_limit = limit
         next_report = 0
         traced = self.recorder is not None
         ff = self.fast_forward and not traced
@@ -106,11 +109,6 @@ class Scheduler:
                         self.now = limit
                         return "cycle limit"
                     return "deadlock"
-                if any(k.state == IDLE_PASM for k in cogs):
-                    if limit < _NEVER:
-                        self.now = limit
-                        return "cycle limit"
-                    return "only PASM cogs left"
                 return "all cogs stopped"
             t = c.t
             if ck >= limit:
@@ -145,7 +143,7 @@ class Scheduler:
     def _key(self, c: Cog) -> int:
         """When cog ``c``'s next bytecode touches shared state (see timing.access_offsets).
 
-        Engine hook: a cog whose ``engine`` is an object (not ``"spin"``/``"pasm"``)
+        Engine hook: a cog whose ``engine`` is an object (not ``"spin"``)
         is run by ``engine.run(cog, limit)`` and reports this moment itself,
         ``engine.key(cog)``.  spinemu.translate's Python engine uses this.
         """
@@ -244,9 +242,12 @@ class Scheduler:
         it would have), and the writer's run loop is preempted after this
         bytecode, so that the scheduler interleaves the two cogs again.
         """
-        woke = False
         tf = t + 12
-        key = tf + ((writer.hub_phase - tf) & 15) + self.access_at[op]
+        self.watch_hit_at(writer, hub_addr, tf + ((writer.hub_phase - tf) & 15) + self.access_at[op])
+
+    def watch_hit_at(self, writer: Cog, hub_addr: int, key: int) -> None:
+        """:meth:`watch_hit` for a write at cycle ``key`` (a PASM cog's hub window)."""
+        woke = False
         for p in list(self._parked):
             if any(((i << shift) & 0xFFFF) >> 2 == hub_addr >> 2 for shift, i, _ in p.busy.reads):
                 self._unpark(p, key + 1 if p.id < writer.id else key)

@@ -101,6 +101,21 @@ class CompiledProgram:
         """The 32 KB EEPROM image (what OpenSpin writes with ``-e``)."""
         return to_eeprom(self.binary)
 
+    def dat_labels(self) -> dict:
+        """Hub address -> ``"'label' in file.spin"`` for every DAT label of every object.
+
+        The chip names a PASM cog's start address with it (``Chip(labels=...)``).
+        """
+        out: dict = {}
+        todo = [self.layout]
+        while todo:
+            lay = todo.pop()
+            todo.extend(lay.children)
+            name = os.path.basename(lay.path)
+            for label, (offset, _size, _cog) in lay.dat.items():
+                out.setdefault((lay.pbase + offset) & 0xFFFF, f"'{label}' in {name}")
+        return out
+
     def listing(self, addresses: bool = True) -> str:
         """The listing: every object's bytes next to the source lines that made them.
 

@@ -1,4 +1,4 @@
-'' Starts a PASM cog (not emulated): the run must say so.
+'' Starts a PASM cog that makes P0 an output and loops.
 VAR
   long id
 PUB main
