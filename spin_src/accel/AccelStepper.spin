@@ -22,7 +22,7 @@
 '' the rest from one cog):
 ''
 ''   startStepDir(stepPin, dirPin)  a step/direction driver (A4988, DRV8825, TB6600...):
-''                                  one high pulse on stepPin per step (about 5 us at 80 MHz,
+''                                  one high pulse on stepPin per step (8 us at 80 MHz,
 ''                                  never under 2 us), dirPin high = forward; DIR changes when
 ''                                  the direction is decided, a whole step interval before the
 ''                                  next pulse.
