@@ -38,7 +38,8 @@ examples:
   spinemu run spin_src/examples/serial_echo.spin --baud 9600 --console
                                                          a serial console on P30/P31: type numbers
   spinemu trace show demo.log --pins 0..4                timeline of pins 0-4
-  spinemu trace steps demo.log --pins 1..4               stepper decoder
+  spinemu trace steps demo.log --pins 1..4               stepper decoder (coils)
+  spinemu trace steps accel.log --step-dir 0,1 --plot m.png   step/dir driver, motion plot
   spinemu trace decode uart run.log --pin 30 --baud 9600  serial text on a pin
   spinemu disasm demo.binary                             listing of an image
 """
@@ -523,16 +524,46 @@ def cmd_trace(args, out: _Out) -> int:
         out.print(f"{args.file} -> {args.output}")
         return 0
     if action == "steps":
-        from .analysis.stepper import decode_steps, render_steps
-
-        if not args.pins:
-            raise UsageError("trace steps needs --pins with the four coil pins, e.g. --pins 1..4")
-        steps = decode_steps(trace, _pins(args.pins))
-        out.stdout.write(render_steps(steps, trace.clock_hz, limit=args.limit) + "\n")
-        return 0
+        return _trace_steps(args, trace, start, end, out)
     if action == "decode":
         return decode_uart_command(args, trace, out)
     raise UsageError(f"unknown trace action {action!r}")
+
+
+def _trace_steps(args, trace, start: int, end: int, out: _Out) -> int:
+    from .analysis.stepper import decode_step_dir, decode_steps, render_steps
+    from .bench.stepper_motor import motor_from_trace
+
+    if bool(args.pins) == bool(args.step_dir):
+        raise UsageError("trace steps needs either --pins with the four coil pins (e.g. --pins 1..4) "
+                         "or --step-dir with the step and dir pins (e.g. --step-dir 0,1)")
+    window = dict(start=start / trace.clock_hz, end=end / trace.clock_hz)
+    if args.pins:
+        coils = _pins(args.pins)
+        if len(coils) != 4:
+            raise UsageError(f"--pins needs the four coil pins, got {len(coils)}: {args.pins}")
+        drive = dict(coils=coils)
+        steps = decode_steps(trace, coils, **window)
+    else:
+        pins = _pins(args.step_dir)
+        if len(pins) != 2:
+            raise UsageError(f"--step-dir needs two pins, STEP,DIR (e.g. 0,1), got {args.step_dir!r}")
+        drive = dict(step=pins[0], dir=pins[1])
+        steps = decode_step_dir(trace, pins[0], pins[1], **window)
+    out.stdout.write(render_steps(steps, trace.clock_hz, limit=args.limit, max_segments=args.segments) + "\n")
+    if args.pull_in is not None or args.plot:
+        try:
+            motion = motor_from_trace(trace, pull_in=args.pull_in, **drive)
+        except ValueError as e:
+            raise UsageError(str(e))
+        out.stdout.write("\n" + motion.summary() + "\n")
+        if args.plot:
+            from .analysis.plot import plot_motion
+
+            plot_motion(motion, path=args.plot, title=os.path.basename(args.file),
+                        start=window["start"], end=window["end"])
+            out.print(f"{args.file} -> {args.plot}")
+    return 0
 
 
 def cmd_sidebyside(args, out: _Out) -> int:
@@ -548,6 +579,16 @@ def cmd_sidebyside(args, out: _Out) -> int:
 
 
 # ----------------------------------------------------------------------------- parser
+_TRACE_DESCRIPTIONS = {
+    "steps": "Decode a stepper motor's steps from a trace log: four coil pins in table order (--pins) "
+             "or a step/direction driver (--step-dir STEP,DIR). Prints the runs at one speed and the "
+             "first steps. --pull-in and --plot run the steps through the bench's stepper motor "
+             "(docs/stepper_motor.md): the steps a motor with that pull-in rate misses, and position, "
+             "speed and acceleration against time. --start/--end (cycles) limit the listed steps and the plot "
+             "to a window (the motor runs through the whole trace).",
+}
+
+
 def _obj_search_option(p) -> None:
     p.add_argument("-L", "-I", dest="include", action="append", metavar="DIR",
                    help="add a folder to search for OBJ files (after the source's own folder)")
@@ -647,8 +688,9 @@ def build_parser() -> argparse.ArgumentParser:
     tc.add_argument("--tolerance", type=float, default=0.005, help="worst timing error to pass (default 0.005)")
     tc.add_argument("--slack", type=int, default=16_000, help="cycles of fixed offset forgiven (default 16000)")
     for name, help_ in (("show", "timeline of the pins in the terminal"), ("plot", "waveform plot to an image file"),
-                        ("convert", "convert a log to VCD"), ("steps", "decode stepper coil patterns into steps")):
-        a = ts.add_parser(name, help=help_, parents=[clock])
+                        ("convert", "convert a log to VCD"),
+                        ("steps", "decode stepper coil patterns or step/dir pulses into steps")):
+        a = ts.add_parser(name, help=help_, parents=[clock], description=_TRACE_DESCRIPTIONS.get(name, help_))
         a.add_argument("file")
         if name in ("plot", "convert"):
             a.add_argument("-o", "--output", required=True, metavar="FILE")
@@ -661,7 +703,17 @@ def build_parser() -> argparse.ArgumentParser:
             a.add_argument("--width", type=_positive_int, default=64, help="columns of the timeline")
             a.add_argument("--changes", type=int, default=0, metavar="N", help="also list the first N changes")
         if name == "steps":
+            a.add_argument("--step-dir", metavar="STEP,DIR",
+                           help="decode a step/direction driver instead: its step and dir pins, e.g. 0,1 "
+                                "(a step per high pulse of at least 1 us, forward while DIR is high)")
             a.add_argument("--limit", type=int, default=20, metavar="N", help="show the first N steps")
+            a.add_argument("--segments", type=int, default=40, metavar="N",
+                           help="show the first N segments (runs at one speed; default 40)")
+            a.add_argument("--pull-in", type=_positive_float, metavar="RATE",
+                           help="run the steps through the motor model with this pull-in rate (steps/s) "
+                                "and report the steps it misses")
+            a.add_argument("--plot", metavar="FILE",
+                           help="plot position, speed and acceleration against time (PNG, SVG or PDF)")
     add_decode_parser(ts, [clock])
     tr.set_defaults(func=cmd_trace)
 
