@@ -40,7 +40,8 @@ examples:
   spinemu run spin_src/examples/serial_echo.spin --baud 9600 --console
                                                          a serial console on P30/P31: type numbers
   spinemu trace show demo.log --pins 0..4                timeline of pins 0-4
-  spinemu trace steps demo.log --pins 1..4               stepper decoder
+  spinemu trace steps demo.log --pins 1..4               stepper decoder (coils)
+  spinemu trace steps accel.log --step-dir 0,1 --plot m.png   step/dir driver, motion plot
   spinemu trace decode uart run.log --pin 30 --baud 9600  serial text on a pin
   spinemu disasm demo.binary                             listing of an image
 """
@@ -279,6 +280,8 @@ def cmd_run(args, out: _Out) -> int:
         if args.engine == "python":
             if kind != "spin":
                 raise UsageError("--engine python needs a .spin source (it translates the source)")
+            if args.trace_cog:
+                raise UsageError("--trace-cog works with the bytecode engine (leave out --engine python)")
             from .translate import run_translated
 
             result = run_translated(args.target, include_dirs=list(args.include or ()), max_cycles=limit,
@@ -288,18 +291,22 @@ def cmd_run(args, out: _Out) -> int:
 
             log = _runtime_warning_log(args, out, prog)
             chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map,
+                        labels=prog.dat_labels() if prog is not None else None,
                         warn=log if log is not None else False,
                         debug_info=prog.debug_info() if prog is not None else None)
             profiler = _attach_profiler(chip, prog) if args.profile else None
             for part in parts:
                 part.attach(chip)
-            progress, update = _progress_callback(out, limit, clock, not args.no_progress and not
-                                                  (session and session.shows))
-            if progress is not None:
-                with progress:
-                    result = chip.run(max_cycles=limit, progress=update)
-            else:
-                result = chip.run(max_cycles=limit)
+            with _pasm_trace_sink(args, out, chip, prog) as sink:
+                for cog_id in args.trace_cog or ():
+                    chip.trace_cog(cog_id, sink)
+                progress, update = _progress_callback(out, limit, clock, not args.no_progress and not
+                                                      (session and session.shows))
+                if progress is not None:
+                    with progress:
+                        result = chip.run(max_cycles=limit, progress=update)
+                else:
+                    result = chip.run(max_cycles=limit)
     wall = time.perf_counter() - t0
     _write_trace(args, result.trace)
     if args.dump_hub:
@@ -316,15 +323,82 @@ def cmd_run(args, out: _Out) -> int:
         rows = [("ended", reason),
                 ("cogs", f"{started} started, {stopped} stopped"),
                 ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
+        rows += _pasm_rows(result)
         if args.trace:
             rows.append(("trace", f"{args.trace} ({len(result.trace.changes)} changes)"))
         if session:
             rows.append(session.summary())
+        if result.stats.get("pll"):
+            rows.append(("PLL", _pll_summary(result.stats["pll"])))
         rows.extend(_runtime_warning_rows(getattr(result, "runtime_warnings", [])))
         out.print(_summary_table(result.trace, result.end_cycle, rows))
     if args.engine != "python" and args.profile:
         out.console.print(profiler.finish(args.target).table())
     return 0
+
+
+def _pll_summary(plls: list) -> str:
+    """One line per PLL output of a run: pins, frequency, which counter, and whether the trace shows it."""
+    def hz(f):
+        return f"{f / 1e6:.6g} MHz" if f >= 1e6 else f"{f / 1e3:.6g} kHz" if f >= 1e3 else f"{f:.6g} Hz"
+    lines = []
+    for p in plls[:8]:
+        pins = ", ".join(f"P{x}" for x in p["pins"]) or "internal"
+        note = "" if p["traced"] or not p["pins"] else ", not in the trace"
+        lines.append(f"{pins}: {hz(p['frequency_hz'])} (cog {p['cog']} CTR{p['counter']}, {p['mode']}{note})")
+    if len(plls) > 8:
+        lines.append(f"... and {len(plls) - 8} more")
+    return "\n".join(lines)
+
+
+def _pasm_rows(result) -> list:
+    """Summary rows for the PASM cogs a run started: where, and how many instructions they ran."""
+    counts = result.stats.get("pasm_instructions_per_cog", {})
+    rows = []
+    for cycle, cog_id, kind, detail in result.cog_events:
+        if kind == "start" and detail.startswith("PASM"):
+            rows.append((f"cog {cog_id}", f"{detail} at cycle {cycle:,}"))
+    if counts:
+        rows.append(("PASM", ", ".join(f"cog {k}: {n:,} instructions" for k, n in sorted(counts.items()))))
+    return rows
+
+
+class _pasm_trace_sink:
+    """``--trace-cog``: a callback writing one line per PASM instruction to the chosen file (or stdout).
+
+    With the program's source, the DAT labels of the code the cog was loaded
+    from name its registers and jump targets (a label counts when its cog
+    address matches its distance from the start of the loaded code).
+    """
+
+    def __init__(self, args, out: "_Out", chip, prog):
+        self.path = getattr(args, "trace_cog_file", None) if getattr(args, "trace_cog", None) else None
+        self.stream = out.stdout
+        self.file = None
+        self.chip = chip
+        self.dat = prog.dat_symbols() if prog is not None else []
+        self.symbols: dict = {}         # code address -> {cog address: label}
+
+    def _symbols(self, code: int) -> dict:
+        table = self.symbols.get(code)
+        if table is None:
+            table = self.symbols[code] = {cog: name for hub, cog, name in self.dat
+                                          if hub >= code and (hub - code) == 4 * cog}
+        return table
+
+    def __enter__(self):
+        if self.path and self.path != "-":
+            try:
+                self.file = self.stream = open(self.path, "w", encoding="utf-8")
+            except OSError as e:
+                raise UsageError(f"cannot write '{self.path}': {e.strerror}") from None
+        write, cogs = self.stream.write, self.chip.cogs
+        return lambda step: write(step.text(self._symbols(cogs[step.cog].code_addr)) + "\n")
+
+    def __exit__(self, *exc):
+        if self.file is not None:
+            self.file.close()
+        return False
 
 
 _PBASIC_REASONS = {"end": "END statement", "stop": "STOP statement", "time": "time limit",
@@ -459,16 +533,46 @@ def cmd_trace(args, out: _Out) -> int:
         out.print(f"{args.file} -> {args.output}")
         return 0
     if action == "steps":
-        from .analysis.stepper import decode_steps, render_steps
-
-        if not args.pins:
-            raise UsageError("trace steps needs --pins with the four coil pins, e.g. --pins 1..4")
-        steps = decode_steps(trace, _pins(args.pins))
-        out.stdout.write(render_steps(steps, trace.clock_hz, limit=args.limit) + "\n")
-        return 0
+        return _trace_steps(args, trace, start, end, out)
     if action == "decode":
         return decode_uart_command(args, trace, out)
     raise UsageError(f"unknown trace action {action!r}")
+
+
+def _trace_steps(args, trace, start: int, end: int, out: _Out) -> int:
+    from .analysis.stepper import decode_step_dir, decode_steps, render_steps
+    from .bench.stepper_motor import motor_from_trace
+
+    if bool(args.pins) == bool(args.step_dir):
+        raise UsageError("trace steps needs either --pins with the four coil pins (e.g. --pins 1..4) "
+                         "or --step-dir with the step and dir pins (e.g. --step-dir 0,1)")
+    window = dict(start=start / trace.clock_hz, end=end / trace.clock_hz)
+    if args.pins:
+        coils = _pins(args.pins)
+        if len(coils) != 4:
+            raise UsageError(f"--pins needs the four coil pins, got {len(coils)}: {args.pins}")
+        drive = dict(coils=coils)
+        steps = decode_steps(trace, coils, **window)
+    else:
+        pins = _pins(args.step_dir)
+        if len(pins) != 2:
+            raise UsageError(f"--step-dir needs two pins, STEP,DIR (e.g. 0,1), got {args.step_dir!r}")
+        drive = dict(step=pins[0], dir=pins[1])
+        steps = decode_step_dir(trace, pins[0], pins[1], **window)
+    out.stdout.write(render_steps(steps, trace.clock_hz, limit=args.limit, max_segments=args.segments) + "\n")
+    if args.pull_in is not None or args.plot:
+        try:
+            motion = motor_from_trace(trace, pull_in=args.pull_in, **drive)
+        except ValueError as e:
+            raise UsageError(str(e))
+        out.stdout.write("\n" + motion.summary() + "\n")
+        if args.plot:
+            from .analysis.plot import plot_motion
+
+            plot_motion(motion, path=args.plot, title=os.path.basename(args.file),
+                        start=window["start"], end=window["end"])
+            out.print(f"{args.file} -> {args.plot}")
+    return 0
 
 
 def cmd_sidebyside(args, out: _Out) -> int:
@@ -484,6 +588,16 @@ def cmd_sidebyside(args, out: _Out) -> int:
 
 
 # ----------------------------------------------------------------------------- parser
+_TRACE_DESCRIPTIONS = {
+    "steps": "Decode a stepper motor's steps from a trace log: four coil pins in table order (--pins) "
+             "or a step/direction driver (--step-dir STEP,DIR). Prints the runs at one speed and the "
+             "first steps. --pull-in and --plot run the steps through the bench's stepper motor "
+             "(docs/stepper_motor.md): the steps a motor with that pull-in rate misses, and position, "
+             "speed and acceleration against time. --start/--end (cycles) limit the listed steps and the plot "
+             "to a window (the motor runs through the whole trace).",
+}
+
+
 def _obj_search_option(p) -> None:
     p.add_argument("-L", "-I", dest="include", action="append", metavar="DIR",
                    help="add a folder to search for OBJ files (after the source's own folder)")
@@ -544,6 +658,11 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--timing", choices=["exact", "realistic"],
                    help="BASIC Stamp only: exact command durations, or with per-instruction interpreter time")
     console_options(r)
+    r.add_argument("--trace-cog", type=int, action="append", choices=range(8), metavar="N",
+                   help="log every PASM instruction cog N executes: cycle, address, disassembly, flags after it "
+                        "and the value written (repeatable; bytecode engine only)")
+    r.add_argument("--trace-cog-file", metavar="FILE", default="-",
+                   help="where --trace-cog writes its log (default: standard output)")
     r.add_argument("--no-progress", action="store_true", help="no progress bar")
     r.add_argument("-q", "--quiet", action="store_true", help="no summary")
     _warning_options(r)
@@ -582,8 +701,9 @@ def build_parser() -> argparse.ArgumentParser:
     tc.add_argument("--tolerance", type=float, default=0.005, help="worst timing error to pass (default 0.005)")
     tc.add_argument("--slack", type=int, default=16_000, help="cycles of fixed offset forgiven (default 16000)")
     for name, help_ in (("show", "timeline of the pins in the terminal"), ("plot", "waveform plot to an image file"),
-                        ("convert", "convert a log to VCD"), ("steps", "decode stepper coil patterns into steps")):
-        a = ts.add_parser(name, help=help_, parents=[clock])
+                        ("convert", "convert a log to VCD"),
+                        ("steps", "decode stepper coil patterns or step/dir pulses into steps")):
+        a = ts.add_parser(name, help=help_, parents=[clock], description=_TRACE_DESCRIPTIONS.get(name, help_))
         a.add_argument("file")
         if name in ("plot", "convert"):
             a.add_argument("-o", "--output", required=True, metavar="FILE")
@@ -596,7 +716,17 @@ def build_parser() -> argparse.ArgumentParser:
             a.add_argument("--width", type=_positive_int, default=64, help="columns of the timeline")
             a.add_argument("--changes", type=int, default=0, metavar="N", help="also list the first N changes")
         if name == "steps":
+            a.add_argument("--step-dir", metavar="STEP,DIR",
+                           help="decode a step/direction driver instead: its step and dir pins, e.g. 0,1 "
+                                "(a step per high pulse of at least 1 us, forward while DIR is high)")
             a.add_argument("--limit", type=int, default=20, metavar="N", help="show the first N steps")
+            a.add_argument("--segments", type=int, default=40, metavar="N",
+                           help="show the first N segments (runs at one speed; default 40)")
+            a.add_argument("--pull-in", type=_positive_float, metavar="RATE",
+                           help="run the steps through the motor model with this pull-in rate (steps/s) "
+                                "and report the steps it misses")
+            a.add_argument("--plot", metavar="FILE",
+                           help="plot position, speed and acceleration against time (PNG, SVG or PDF)")
     add_decode_parser(ts, [clock])
     tr.set_defaults(func=cmd_trace)
 

@@ -13,7 +13,9 @@ bytecode, so every cycle of a cog's life lands somewhere:
 
 So for every cog, work + wait + start is exactly the cycles from its start
 to its stop (or to the end of the run): for cog 0, which runs from cycle 0,
-that is the run's length if it runs to the end.  Lines and methods come from
+that is the run's length if it runs to the end.  A cog running PASM is not
+broken down by line (the probe sees Spin bytecodes only): its lives count as
+``pasm`` cycles, so work + wait + start + pasm is its running time.  Lines and methods come from
 the program's :class:`~spinemu.debuginfo.DebugInfo` (an image without one is
 profiled by bytecode address).  Method figures are *self* cycles: the
 bytecodes of the method itself, not of the methods it calls.
@@ -80,6 +82,7 @@ class CogStat:
     work: int = 0
     wait: int = 0
     bytecodes: int = 0
+    pasm: int = 0                                    # cycles it ran PASM (not broken down)
 
     @property
     def cycles(self) -> int:
@@ -152,10 +155,15 @@ class Profile:
         for col in ("cog", "lived", "work", "wait", "start", "bytecodes"):
             cogs.add_column(col, justify="right")
         for c in self.cogs:
+            if c.pasm:
+                cogs.add_row(str(c.cog), f"{c.cycles:,}", f"PASM: {c.pasm:,}", "", f"{c.start:,}", "")
+                continue
             cogs.add_row(str(c.cog), f"{c.cycles:,}", _share(c.work, c.cycles), _share(c.wait, c.cycles),
                          f"{c.start:,}", f"{c.bytecodes:,}")
         parts.append(cogs)
         for c in self.cogs:
+            if not c.bytecodes:
+                continue
             lines = sorted((s for s in self.lines if s.cog == c.cog), key=lambda s: -s.cycles)[:top]
             t = Table(title=f"cog {c.cog}: hottest lines", box=None, header_style="bold")
             for col, just, width in (("line", "left", 21), ("work", "right", 11), ("wait", "right", 11),
@@ -209,6 +217,7 @@ class Profiler:
         self._cogs = [CogStat(i) for i in range(8)]
         self._life_start: list = [None] * 8
         self._fresh = [False] * 8          # a life has started and its first bytecode is still to come
+        self._pasm = [False] * 8           # the current life runs PASM
         self._events = 0
 
     # ------------------------------------------------------------------ the probe
@@ -257,21 +266,29 @@ class Profiler:
 
     def _scan(self, chip) -> None:
         """Cog starts and stops since the last look: close a stopped cog's last bytecode at its stop."""
-        for t, cid, kind, _detail in chip.cog_events[self._events:]:
+        for t, cid, kind, detail in chip.cog_events[self._events:]:
             if kind == "start":
+                if self._life_start[cid] is not None:   # restarted without a stop of its own
+                    self._end_life(cid, t)
                 self._life_start[cid] = t
-                self._fresh[cid] = True
+                self._pasm[cid] = detail.startswith("PASM")
+                self._fresh[cid] = not self._pasm[cid]
             else:
-                last = self._open[cid]
-                if last is not None:
-                    self._close(cid, last, t)
-                elif self._fresh[cid]:              # stopped before its first bytecode
-                    self._fresh[cid] = False
-                    self._cogs[cid].start += t - self._life_start[cid]
-                if self._life_start[cid] is not None:
-                    self._cogs[cid].lives.append((self._life_start[cid], t))
-                    self._life_start[cid] = None
+                self._end_life(cid, t)
         self._events = len(chip.cog_events)
+
+    def _end_life(self, cid: int, t: int) -> None:
+        last = self._open[cid]
+        if last is not None:
+            self._close(cid, last, t)
+        elif self._fresh[cid]:                      # stopped before its first bytecode
+            self._fresh[cid] = False
+            self._cogs[cid].start += t - self._life_start[cid]
+        if self._life_start[cid] is not None:
+            if self._pasm[cid]:
+                self._cogs[cid].pasm += t - self._life_start[cid]
+            self._cogs[cid].lives.append((self._life_start[cid], t))
+            self._life_start[cid] = None
 
     # ------------------------------------------------------------------ the result
     def finish(self, program: str = "") -> Profile:
@@ -280,14 +297,8 @@ class Profiler:
         self._scan(chip)
         end = chip.now
         for cid in range(8):
-            if self._open[cid] is not None:
-                self._close(cid, self._open[cid], end)
-            elif self._fresh[cid]:
-                self._fresh[cid] = False
-                self._cogs[cid].start += end - self._life_start[cid]
-            if self._life_start[cid] is not None:
-                self._cogs[cid].lives.append((self._life_start[cid], end))
-                self._life_start[cid] = None
+            if self._life_start[cid] is not None or self._open[cid] is not None:
+                self._end_life(cid, end)
         info = self.info
         lines: dict = {}
         methods: dict = {}

@@ -19,9 +19,9 @@ def check_sums(profile):
     for c in profile.cogs:
         lines = [s for s in profile.lines if s.cog == c.cog]
         methods = [m for m in profile.methods if m.cog == c.cog]
-        assert c.work + c.wait + c.start == c.cycles
-        assert sum(s.cycles for s in lines) + c.start == c.cycles
-        assert sum(m.cycles for m in methods) + c.start == c.cycles
+        assert c.work + c.wait + c.start + c.pasm == c.cycles
+        assert sum(s.cycles for s in lines) + c.start + c.pasm == c.cycles
+        assert sum(m.cycles for m in methods) + c.start + c.pasm == c.cycles
         assert sum(s.bytecodes for s in lines) == c.bytecodes
 
 
@@ -110,3 +110,18 @@ def test_profile_writes_json_csv_and_an_annotated_listing(tmp_path):
 def test_run_profile_prints_the_tables_after_the_summary():
     out = cli("run", TWO_COGS, "--profile", "--no-progress")
     assert out.index("ended") < out.index("cycles per cog") < out.index("cog 1: hottest lines")
+
+
+def test_a_pasm_cog_counts_as_pasm_and_the_figures_still_add_up():
+    src = ("PUB main\n  cognew(@code, 0)\n  waitcnt(cnt + 50_000)\n  cogstop(1)\n  waitcnt(cnt + 10_000)\n"
+           "DAT\ncode  nop\nloop  jmp #loop\n")
+    prog = compile_source(src)
+    chip = Chip(prog.binary, debug_info=prog.debug_info())
+    profiler = Profiler(chip, prog.debug_info())
+    chip.probe = profiler
+    result = chip.run()
+    profile = profiler.finish()
+    check_sums(profile)
+    cog1 = profile.cogs[1]
+    assert cog1.pasm == cog1.cycles > 45_000 and cog1.bytecodes == 0
+    assert profile.cogs[0].cycles == result.end_cycle

@@ -25,7 +25,11 @@ Modules:
 * :mod:`~spinemu.bench.inputs` - composing input models;
 * :mod:`~spinemu.bench.terminal` - terminal control codes to text;
 * :mod:`~spinemu.bench.live` - a console connected to the real terminal
-  (live output, keys typed, real-time pacing), for the command line.
+  (live output, keys typed, real-time pacing), for the command line;
+* :mod:`~spinemu.bench.stepper_motor` - a stepper motor on four coil pins or
+  on a step/direction driver: shaft position, speed and acceleration over
+  time, and the steps it misses when the step rate jumps too far (fed pin
+  changes in time order, or a recorded trace).
 """
 from __future__ import annotations
 

@@ -6,13 +6,15 @@ order because each cog runs a slice ahead of the others.  A listener
 (:meth:`Listeners.add_pin_listener`) is called as
 ``listener(changes, upto, present)``:
 
-* ``changes``: the combined pin states ``(cycle, dir, out)`` (as in the
-  trace) that became final since the previous call, in time order;
+* ``changes``: the combined pin states ``(cycle, dir, out)`` that became
+  final since the previous call, in time order, counter outputs included:
+  the same list the trace is made of (both read one
+  :class:`~spinemu.chip.pinfold.PinFold`, ``chip.pin_fold``);
 * ``upto``: no pin changes before this cycle any more: the earliest next
   bytecode of the running cogs (for an engine object, its next shared
   access), or the next input change or counter edge that wakes a
   pin-waiting cog, counter edges up to it included, and never after
-  ``present``;
+  ``present`` or the cycle limit;
 * ``present``: the earliest cycle at which a new input change is still seen
   by the program (every read of the pins so far came before it): the next
   shared access of the running cogs, or, while every cog waits on pins, the
@@ -26,12 +28,15 @@ cycle limit or in a deadlock.  The last call, at the end of the run, has
 ``upto`` one past the last cycle, or ``1 << 62`` when nothing can change the
 pins any more (every cog stopped, a deadlock).  Without listeners none of
 this runs.
+
+Each call folds only what is new since the previous one (the pin events
+and the counters' output changes before ``upto``; :mod:`.pinfold`,
+:mod:`.countermarks`), so listening costs time in proportion to the calls
+and the changes, however long the run.
 """
 from __future__ import annotations
 
 from typing import Optional
-
-from .cog import STOPPED
 
 __all__ = ["Listeners"]
 
@@ -48,12 +53,14 @@ class Listeners:
         self.pin_listeners: list = []
         self.listen_interval = None
         self._listen_at = 0                 # the scheduler tells the listeners when it reaches this cycle
-        self._listen_pos = 0                # pin_events before this index were handed over
-        self._listen_state: dict = {}       # cog -> (dira, outa) of the handed-over events
-        self._listen_pins = (0, 0)
+        self._listen_from = 0               # pin_fold.changes before this index were handed over
         self._listened_to = 0
-        #: pin events recorded before the cycle already handed to listeners (0 unless a timing rule is broken)
-        self.late_pin_events = 0
+        self._listen_end = _NEVER           # one past the run's last cycle, when known (the cycle limit)
+
+    @property
+    def late_pin_events(self) -> int:
+        """Pin events recorded before the cycle already handed to listeners (0 unless a timing rule is broken)."""
+        return self.pin_fold.late
 
     def add_pin_listener(self, listener, interval_cycles: Optional[int] = None) -> None:
         """Call ``listener(changes, upto, present)`` as the run goes (see the module docstring).
@@ -109,45 +116,22 @@ class Listeners:
         return False
 
     def _deliver_pins(self, upto: int, present: int) -> None:
-        """Fold the recorded pin events before ``upto`` and hand them to the listeners."""
+        """Fold the pins before ``upto`` and hand the new states over.
+
+        Nothing after the run's last cycle is folded (:attr:`_listen_end`):
+        the scheduler may know that no cog changes the pins for a while past
+        the cycle limit, but the run, its trace and the counters stop there.
+        ``upto`` is :data:`_NEVER` only in the last call, after the run.
+        """
+        end = self._listen_end
+        if upto > end and upto < _NEVER:
+            upto = end
         if upto < self._listened_to:
             upto = self._listened_to
-        if self.counters_on:
-            for c in self.cogs:
-                if c.state != STOPPED:
-                    self.counters.flush(c, upto - 1)
-        ev = self.pin_events
-        i = self._listen_pos
-        n = len(ev)
-        if n - i > 1:
-            tail = ev[i:]
-            tail.sort()
-            ev[i:] = tail
-        state = self._listen_state
-        d, o = self._listen_pins
-        floor = self._listened_to
-        changes = []
-        while i < n:
-            t, _, cog_id, dira, outa, running = ev[i]
-            if t >= upto:
-                break
-            i += 1
-            if t < floor:               # came later than promised: hand it over at once
-                self.late_pin_events += 1
-                t = floor
-            if running:
-                state[cog_id] = (dira, outa)
-            else:
-                state.pop(cog_id, None)
-            nd = no = 0
-            for dd, oo in state.values():
-                nd |= dd
-                no |= dd & oo
-            if nd != d or no != o:
-                d, o = nd, no
-                changes.append((t, d, o))
-        self._listen_pos = i
-        self._listen_pins = (d, o)
+        fold = self.pin_fold
+        fold.advance(upto if upto < end else end)
+        changes = fold.changes[self._listen_from:]
+        self._listen_from = len(fold.changes)
         self._listened_to = upto
         for listener in self.pin_listeners:
             listener(changes, upto, present)

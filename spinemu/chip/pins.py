@@ -3,11 +3,16 @@
 :class:`Pins` is a mixin of :class:`spinemu.chip.chip.Chip`.  ``dir`` is the
 OR of the running cogs' DIRA; ``out`` the OR of ``DIRA & (OUTA | counter
 outputs)`` (Propeller Manual v1.2, "I/O Pins").  A change is recorded at the
-cycle of the interpreter instruction that writes the register + 4; the
-record is sorted and folded into a :class:`spinemu.trace.PinTrace` at the end
-of the run (cogs may run slightly out of time order).  INA reads driven pins
-as driven and the others from the input model (:mod:`spinemu.chip.inputs`).
-Live pin listeners (the bench's view of a run) are in :mod:`.listen`.
+cycle of the interpreter instruction that writes the register + 4.  The
+record (``pin_events``) holds what each cog wrote to DIRA and OUTA (cogs may
+append slightly out of time order); :class:`spinemu.chip.pinfold.PinFold`
+folds it in time order, with the counter outputs from the counters' own
+history (:mod:`spinemu.chip.countermarks`), into combined pin states: the
+live pin listeners (the bench's view of a run, :mod:`.listen`) read them as
+the run goes, and at the end they make the :class:`spinemu.trace.PinTrace`.
+INA reads driven pins as driven and the others from the input model
+(:mod:`spinemu.chip.inputs`); the pins as they were at an earlier cycle are
+in :mod:`spinemu.chip.pinhistory`.
 """
 from __future__ import annotations
 
@@ -42,21 +47,19 @@ class Pins:
         return o | (self.inputs.levels(t) & ~d & 0xFFFFFFFF)
 
     def record_cog_pins(self, c: Cog, t: int) -> None:
-        """Add cog ``c``'s pin drive at cycle ``t`` to the pin record."""
-        out = c.outa
-        if self.counters_on:
-            out |= self.counters.outputs(c, t)
+        """Add cog ``c``'s DIRA and OUTA at cycle ``t`` to the pin record (counter outputs are added from
+        the counters' own history when the trace is built)."""
         self._seq += 1
-        self.pin_events.append((t, self._seq, c.id, c.dira, out, c.state != STOPPED))
+        self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, c.state != STOPPED))
 
     def note_pins(self, c: Cog, t: int) -> None:
-        """Cog ``c`` changed DIRA, OUTA or a counter at cycle ``t`` (the pins change then).
-
-        ``pin_hooks`` (runtime checks, a debugger) are called as ``f(c, t)`` afterwards.
-        """
-        self.record_cog_pins(c, t)
+        """Cog ``c`` changed DIRA or OUTA at cycle ``t`` (the pins change then)."""
+        self._seq += 1
+        self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, c.state != STOPPED))
         if self._pin_waiters:
-            self._wake_pin_waiters(t)
+            self._wake_pin_waiters(t, c)
+            if self.counters.feedback_on:       # a feedback output follows its input one clock later
+                self._wake_pin_waiters(t + 1, c)
         if self.pin_hooks:
             for f in self.pin_hooks:
                 f(c, t)
@@ -73,39 +76,35 @@ class Pins:
         self._ext_seen = max(self._ext_seen, t)
         raise Reschedule(_NEVER - tf)
 
-    def _wake_pin_waiters(self, t: int) -> None:
+    def _wake_pin_waiters(self, t: int, writer=None) -> None:
         """Resume the cogs whose WAITPEQ/WAITPNE condition holds at cycle ``t``.
 
-        Called from inside another cog's bytecode (a pin write), it also
-        preempts that cog's run loop, so the scheduler sees the woken cog.
+        Called from inside another cog's instruction (``writer``'s pin write),
+        it also preempts that cog's run loop, so the scheduler sees the woken
+        cog.  A Spin waiter resumes a fixed time after ``t``; a PASM waiter
+        (``after`` None) at its next poll (:meth:`PasmEngine.wake_time`).
         """
         woke = False
         for c in list(self._pin_waiters):
             mask, state, equal, after = c.pin_wait
             if ((self.ina(t) & mask) == state) == equal:
                 self._pin_waiters.remove(c)
+                c.t = t + after if after is not None else c.engine.wake_time(c, t, writer)
                 c.pin_wait = None
                 c.state = RUNNING
                 self._cogs_changed = True
-                c.t = t + after
                 woke = True
         if woke:
             self._request_preemption()
 
     def _build_trace(self, end: int) -> PinTrace:
+        """The pin trace up to ``end``: the pin record and the counters' outputs, folded by :attr:`pin_fold`
+        (the same fold the live pin listeners read)."""
+        self.pin_fold.advance(end + 1)
         trace = PinTrace(self.clock_hz, end_cycle=end)
         trace.record(0, 0, 0)
-        state = {}
-        for t, _, cog_id, dira, outa, running in sorted(self.pin_events):
+        for t, d, o in self.pin_fold.changes:
             if t > end:
                 break
-            if running:
-                state[cog_id] = (dira, outa)
-            else:
-                state.pop(cog_id, None)
-            d = o = 0
-            for dd, oo in state.values():
-                d |= dd
-                o |= dd & oo
             trace.record(t, d, o)
         return trace

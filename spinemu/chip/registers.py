@@ -59,14 +59,10 @@ class Registers:
             k = r - 0x1F0
             if k == 4:
                 if v != c.outa:
-                    if self.chip.counters_on:
-                        self.chip.counters.flush(c, t)
                     c.outa = v
                     self.chip.note_pins(c, t)
             elif k == 6:
                 if v != c.dira:
-                    if self.chip.counters_on:
-                        self.chip.counters.flush(c, t)
                     c.dira = v
                     self.chip.note_pins(c, t)
             elif k == 5:

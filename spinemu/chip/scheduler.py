@@ -17,7 +17,7 @@ chosen when one is attached.
 from __future__ import annotations
 
 from .blocks import BUSY, PROGRAM, WATCHPOINT, BlockCompiler
-from .cog import PARKED, RUNNING, IDLE_PASM, Cog
+from .cog import PARKED, RUNNING, Cog
 from .control import CogStopped, Halted, Preempted, RebootRequested, Reschedule
 from .fastforward import INTERRUPTED, LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
 
@@ -61,13 +61,16 @@ class Scheduler:
     def _schedule(self, limit: int, progress) -> str:
         """Advance the cog furthest behind until every cog stopped or ``limit``. (Hot loop.)
 
-        A cog whose ``engine`` is an object rather than a name (the Python
-        engine of :mod:`spinemu.translate`) is run by ``engine.run(cog,
-        until)``, which must advance ``cog.t`` (or stop the cog) as the
-        bytecode loop does; its next access comes from :meth:`_key`.
+        A cog whose ``engine`` is an object rather than a name (the PASM
+        engine of :mod:`.pasm_cog`, the Python engine of
+        :mod:`spinemu.translate`) is run by ``engine.run(cog, until)``, which
+        must advance ``cog.t`` (or stop the cog) as the bytecode loop does
+        and may not perform a shared access at or after ``until``; its next
+        access comes from :meth:`_key`.
         """
         cogs = self.cogs
         mem, acc = self.mem, self.access_at
+        self.run_limit = limit
         next_report = 0
         traced = self.recorder is not None
         probed = self.probe is not None
@@ -86,7 +89,12 @@ class Scheduler:
             ck = ck2 = 0
             for k in running:
                 if generic:
-                    key = self._key(k)
+                    e = k.engine
+                    if e.__class__ is not str:
+                        key = e.key(k)
+                    else:
+                        key = k.t + 12
+                        key += ((k.hub_phase - key) & 15) + acc[mem[k.pc]]
                 else:
                     key = k.t + 12
                     key += ((k.hub_phase - key) & 15) + acc[mem[k.pc]]
@@ -123,11 +131,6 @@ class Scheduler:
                         self.now = limit
                         return "cycle limit"
                     return "deadlock"
-                if any(k.state == IDLE_PASM for k in cogs):
-                    if limit < _NEVER:
-                        self.now = limit
-                        return "cycle limit"
-                    return "only PASM cogs left"
                 return "all cogs stopped"
             t = c.t
             if ck >= limit:
@@ -164,7 +167,7 @@ class Scheduler:
     def _key(self, c: Cog) -> int:
         """When cog ``c``'s next bytecode touches shared state (see timing.access_offsets).
 
-        Engine hook: a cog whose ``engine`` is an object (not ``"spin"``/``"pasm"``)
+        Engine hook: a cog whose ``engine`` is an object (not ``"spin"``)
         is run by ``engine.run(cog, limit)`` and reports this moment itself,
         ``engine.key(cog)``.  spinemu.translate's Python engine uses this.
         """
@@ -269,9 +272,12 @@ class Scheduler:
         if self.watch[hub_addr >> 2] & _OBSERVED:
             for f in self.write_hooks:
                 f(writer, hub_addr, op, t)
-        woke = False
         tf = t + 12
-        key = tf + ((writer.hub_phase - tf) & 15) + self.access_at[op]
+        self.watch_hit_at(writer, hub_addr, tf + ((writer.hub_phase - tf) & 15) + self.access_at[op])
+
+    def watch_hit_at(self, writer: Cog, hub_addr: int, key: int) -> None:
+        """:meth:`watch_hit` for a write at cycle ``key`` (a PASM cog's hub window)."""
+        woke = False
         for p in list(self._parked):
             if any(((i << shift) & 0xFFFF) >> 2 == hub_addr >> 2 for shift, i, _ in p.busy.reads):
                 self._unpark(p, key + 1 if p.id < writer.id else key)

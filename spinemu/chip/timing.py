@@ -282,8 +282,11 @@ def access_offsets() -> list:
     ... indexed                  192   224   272
     ==========================  ====  ====  =========
 
-    REG reads 144 (bit 220, range 244), SPR 164, LOCKNEW/LOCKSET/LOCKCLR 112,
-    COGSTOP 112 (when the target stops), COGINIT 172 (when the new cog starts).
+    REG reads 144 (bit 220, range 244), SPR 164 (PUSH_SPR and USING_SPR: where
+    they read the register), LOCKNEW/LOCKSET/LOCKCLR 112, COGSTOP 112 (when the
+    target stops), COGINIT 172 (when the new cog starts).  Register reads sit
+    at the read moment because CNT, INA and a counter's PHS in an input mode
+    depend on when they are read: by then every other cog has run up to it.
     """
     acc = [0] * 256
     for op in range(0x40, 0x80):
@@ -292,7 +295,7 @@ def access_offsets() -> list:
         table = (224, 256, 320) if (op >> 2) & 3 else (176, 208, 256)
         if op & 3 != 3:
             acc[op] = table[op & 3] + (16 if op & 0x10 else 0)
-    acc[0x3D], acc[0x3E], acc[0x3F], acc[0x24] = 220, 244, 144, 164
+    acc[0x3D], acc[0x3E], acc[0x3F], acc[0x24], acc[0x26] = 220, 244, 144, 164, 164
     for op in range(0x29, 0x30):
         if op != 0x2C:
             acc[op] = 112

@@ -118,6 +118,32 @@ class CompiledProgram:
         """The 32 KB EEPROM image (what OpenSpin writes with ``-e``)."""
         return to_eeprom(self.binary)
 
+    def dat_symbols(self) -> list:
+        """``(hub address, cog address, label)`` for every DAT label of every object."""
+        out = []
+        todo = [self.layout]
+        while todo:
+            lay = todo.pop()
+            todo.extend(lay.children)
+            for label, (offset, _size, cog) in lay.dat.items():
+                out.append(((lay.pbase + offset) & 0xFFFF, cog, label))
+        return sorted(set(out))
+
+    def dat_labels(self) -> dict:
+        """Hub address -> ``"'label' in file.spin"`` for every DAT label of every object.
+
+        The chip names a PASM cog's start address with it (``Chip(labels=...)``).
+        """
+        out: dict = {}
+        todo = [self.layout]
+        while todo:
+            lay = todo.pop()
+            todo.extend(lay.children)
+            name = os.path.basename(lay.path)
+            for label, (offset, _size, _cog) in lay.dat.items():
+                out.setdefault((lay.pbase + offset) & 0xFFFF, f"'{label}' in {name}")
+        return out
+
     def debug_info(self):
         """Names and places for tools that look into a running chip (:class:`spinemu.debuginfo.DebugInfo`).
 

@@ -8,9 +8,9 @@ frame flags (``- 8``).  The chain ends at the frame the boot loader or
 ``cognew`` made, whose return address is the ROM's ``$FFF9``.
 
 A cog is described by a view chosen by what runs it (``Cog.engine``):
-:class:`SpinCogView` for the Spin interpreter, :class:`OtherCogView` for
-anything else (a PASM cog: its code address and PAR; the place to add PASM
-registers and the current instruction once PASM cogs run).
+:class:`SpinCogView` for the Spin interpreter, :class:`PasmCogView` for a
+PASM cog (its cog address, the instruction there, the DAT label it was loaded
+from), :class:`OtherCogView` for anything else (the Python engine).
 """
 from __future__ import annotations
 
@@ -18,7 +18,7 @@ import os
 from dataclasses import dataclass, field
 from typing import Optional
 
-__all__ = ["Frame", "SpinCogView", "OtherCogView", "cog_view", "signed", "short_path"]
+__all__ = ["Frame", "SpinCogView", "PasmCogView", "OtherCogView", "cog_view", "signed", "short_path"]
 
 _MAX_FRAMES = 64
 
@@ -184,10 +184,38 @@ class OtherCogView:
         return f"cog {self.id} ({self.state}): " + self.place()
 
 
+class PasmCogView(OtherCogView):
+    """A cog running PASM: where it is in its cog RAM and what it runs there."""
+
+    kind = "pasm"
+
+    def place(self) -> str:
+        c = self.cog
+        pc = c.pc & 511
+        text = f"PASM at cog ${pc:03X}"
+        try:
+            from ..pasm import disassemble
+            text += ": " + " ".join(disassemble(c.ram[pc] & 0xFFFFFFFF).split())
+        except Exception:  # a register the view cannot read: the address is enough
+            pass
+        hub = (c.code_addr + 4 * pc) & 0xFFFF if c.code_addr is not None else None
+        if hub is not None and pc < 496:
+            found = self.info.variable_at(hub) if self.info is not None else None
+            if found is not None:
+                inst, var = found
+                off = hub - var.addr
+                text += f" ({var.name}{f'+{off}' if off else ''} in {short_path(inst.obj.path)})"
+            else:
+                text += f" (loaded from hub ${c.code_addr:04X})"
+        return text + f", PAR ${c.par:04X}"
+
+
 def cog_view(chip, cog, info=None):
     """The view of ``cog`` that fits what runs it (``None`` for a stopped cog)."""
     if cog.state == "stopped":
         return None
     if cog.engine == "spin":
         return SpinCogView(chip, cog, info)
+    if getattr(cog, "ram", None) is not None and getattr(cog, "code_addr", None) is not None:
+        return PasmCogView(chip, cog, info)
     return OtherCogView(chip, cog, info)

@@ -440,7 +440,9 @@ class Debugger:
         n = self.selected if cog is None else cog
         view = self.cog(n)
         if view.kind != "spin":
-            raise DebugError(f"cog {n} does not run Spin bytecode; spinemu cannot step it yet")
+            what = "runs PASM" if view.kind == "pasm" else "does not run Spin bytecode"
+            raise DebugError(f"cog {n} {what}; the debugger steps Spin cogs only (for now: "
+                             f"'cogs' shows where it is, 'spinemu run --trace-cog {n}' logs its instructions)")
         if self.chip.cogs[n].state != RUNNING and kind != "finish":
             pass                                # it is waiting: the step ends when it goes on
         c = self.chip.cogs[n]

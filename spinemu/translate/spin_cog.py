@@ -27,6 +27,10 @@ _REG = {"PAR": 0x1F0, "CNT": 0x1F1, "INA": 0x1F2, "INB": 0x1F3, "OUTA": 0x1F4, "
         "PHSA": 0x1FC, "PHSB": 0x1FD, "VCFG": 0x1FE, "VSCL": 0x1FF}
 
 
+#: registers whose value depends on what the other cogs have done up to the read (INA, PHSA, PHSB)
+_PIN_REGS = frozenset({0x1F2, 0x1FC, 0x1FD})
+
+
 def _fetched() -> int:
     """The cycle at which the current cog's next bytecode has been fetched (on its hub window)."""
     c = RT.cog
@@ -42,7 +46,11 @@ def _read_at(reg: int, read_at: int) -> int:
     """Read ``reg`` ``read_at`` cycles after the reading bytecode's fetch; the read pays the statement's rest."""
     c = RT.cog
     tf = _fetched()
-    value = RT.chip.registers.read(c, reg, tf + read_at)
+    at = tf + read_at
+    if at >= RT.limit and reg in _PIN_REGS:     # INA/PHS depend on other cogs' pins: let them run up to the read
+        RT.keys[c.id] = at
+        RT.pause()
+    value = RT.chip.registers.read(c, reg, at)
     if RT.pending is not None:          # the statement's bytecodes from this read on
         c.t = tf + RT.pending
         RT.pending = None

@@ -14,7 +14,7 @@ import random
 
 import pytest
 
-from spinemu.bench import SerialConsole
+from spinemu.bench import SerialConsole, UartFormat, decode_uart
 from spinemu.bench.inputs import PinOverride
 from spinemu.chip import Chip
 from spinemu.chip.inputs import PinStimulus
@@ -29,7 +29,7 @@ ARTICLE = os.path.join(ROOT, "tests", "data", "article")
 CLOCK = 80_000_000
 #: where each program and OpenSpin's image of it are
 PROGRAMS = {"serial_hello": (EXAMPLES, "examples"), "serial_echo": (EXAMPLES, "examples"),
-            "serial_two_cogs": (BENCH, "bench")}
+            "serial_two_cogs": (BENCH, "bench"), "nco_serial": (BENCH, "bench")}
 
 
 def src(name: str) -> str:
@@ -51,7 +51,7 @@ def run(name, images, console, engine="bytecode", compat="spinsim", cycles=CLOCK
     return chip.run(max_cycles=cycles), chip
 
 
-@pytest.mark.parametrize("name", ["serial_hello", "serial_echo", "serial_two_cogs"])
+@pytest.mark.parametrize("name", ["serial_hello", "serial_echo", "serial_two_cogs", "nco_serial"])
 def test_spinemu_compiles_the_serial_programs_as_openspin_does(images, name):
     with open(os.path.join(ROOT, "tests", "data", PROGRAMS[name][1], name + ".binary"), "rb") as f:
         assert images[name] == f.read()
@@ -108,6 +108,23 @@ def test_the_console_decodes_one_pin_while_other_cogs_interleave(images):
     assert console.data == b"1,2,3,4,5,6,7,8,9,10,11,12,\r"
     assert 5 in result.trace.driven_pins()
     assert chip.late_pin_events == 0
+
+
+@pytest.mark.parametrize("engine", ["bytecode", "python"])
+def test_the_console_reads_what_a_counter_sends_as_the_run_goes(images, engine):
+    """TX is a counter's output (NCO, FRQA = 0: the program writes PHSA, OUTA stays 0) while another
+    counter blinks P4: the console reads the line live, as a decoder of the finished trace does."""
+    console = SerialConsole(baud=9600)
+    seen = []
+    console.on_byte = lambda cycle, byte: seen.append(console.now)      # how far the chip had got
+    result, chip = run("nco_serial", images, console, engine, compat="chip", cycles=CLOCK // 10)
+    assert result.reason == "all cogs stopped"
+    assert console.data == b"Sent by a counter!\r" and console.errors == []
+    offline = decode_uart(result.trace, 30, UartFormat(9600), hold_last=True)
+    assert [f.value for f in offline] == list(console.data)
+    assert seen[0] < result.end_cycle // 4              # handed over as it went, not at the end
+    if chip is not None:
+        assert chip.late_pin_events == 0
 
 
 def test_bytes_sent_back_to_back_with_no_gap_are_lost_by_a_busy_spin_receiver(images):

@@ -225,3 +225,12 @@ def test_python_engine_gives_the_bytecode_engines_trace(tmp_path):
     assert code == 0, err
     code, out, _ = run("trace", "compare", a, b)
     assert code == 0 and "largest offset 0 cycles" in out
+
+
+def test_run_summary_lists_pll_outputs_and_warns_about_the_untraced_ones():
+    code, out, err = run("run", ROOT / "tests" / "data" / "chip" / "counters" / "pll.spin", "--cycles", "200000",
+                         "--compat", "chip", "--no-progress")
+    assert code == 0, err
+    assert "P5, P6: 625 kHz (cog 0 CTRA, PLL differential)" in out
+    assert "P4: 80 MHz (cog 0 CTRB, PLL single-ended, not in the trace)" in out
+    assert "warning:" in err and "80.000000 MHz" in err

@@ -173,12 +173,13 @@ def test_a_debugged_run_is_the_same_run_to_the_cycle():
 
 
 def test_a_pasm_cog_is_shown_but_not_stepped():
-    prog = compile_source("PUB main\n  cognew(@code, 0)\n  waitcnt(cnt + 10_000)\nDAT\ncode  jmp #code\n")
+    prog = compile_source("PUB main\n  cognew(@code, 0)\n  waitcnt(cnt + 10_000)\nDAT\ncode  nop\nloop  jmp #loop\n")
     dbg = Debugger(prog)
     dbg.run_for(5_000)
     view = dbg.cog(1)
-    assert view.kind == "other" and "pasm" in view.place().lower() and "PAR $0000" in view.place()
-    with pytest.raises(DebugError, match="cannot step it yet"):
+    assert view.kind == "pasm" and view.place().startswith("PASM at cog $001: jmp #$001 (loop in ")
+    assert view.place().endswith("main.spin), PAR $0000")
+    with pytest.raises(DebugError, match="steps Spin cogs only"):
         dbg.step(cog=1)
 
 
