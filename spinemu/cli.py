@@ -20,6 +20,8 @@ from typing import Optional, Sequence, TextIO
 
 from . import __version__
 from .cli_console import ConsoleSession, add_decode_parser, console_options, console_wanted, decode_uart_command
+from .cli_tools import (_add_debug_parser, _add_profile_parser, _attach_profiler, _print_hints,
+                        _runtime_warning_log, _runtime_warning_rows, _warning_options)
 from .diagnostics import SpinError, UsageError
 
 __all__ = ["main", "entry_point", "build_parser"]
@@ -130,8 +132,7 @@ def cmd_compile(args, out: _Out) -> int:
     if _kind(args.source) != "spin":
         raise UsageError(f"'{args.source}' is not a .spin source file")
     prog = _compile(args.source, args.include, args.define)
-    for w in prog.warnings:
-        out.err_console.print(w.render() if hasattr(w, "render") else str(w), markup=False)
+    _print_hints(out, prog)
     target = args.output or os.path.splitext(args.source)[0] + ".binary"
     written = []
     if not args.eeprom or args.output:
@@ -267,6 +268,7 @@ def cmd_run(args, out: _Out) -> int:
     if args.console_in_at is not None and not args.console_in:
         raise UsageError("--console-in-at needs --console-in FILE (the bytes to send)")
     image, source_map, prog = _load_target(args.target, args.include, args.define)
+    _print_hints(out, prog)
     from .image import ImageHeader
 
     clock = ImageHeader.parse(image).clkfreq or CLOCK_DEFAULT
@@ -287,8 +289,12 @@ def cmd_run(args, out: _Out) -> int:
         else:
             from .chip import Chip
 
+            log = _runtime_warning_log(args, out, prog)
             chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map,
-                        labels=prog.dat_labels() if prog is not None else None)
+                        labels=prog.dat_labels() if prog is not None else None,
+                        warn=log if log is not None else False,
+                        debug_info=prog.debug_info() if prog is not None else None)
+            profiler = _attach_profiler(chip, prog) if args.profile else None
             for part in parts:
                 part.attach(chip)
             with _pasm_trace_sink(args, out, chip, prog) as sink:
@@ -324,7 +330,10 @@ def cmd_run(args, out: _Out) -> int:
             rows.append(session.summary())
         if result.stats.get("pll"):
             rows.append(("PLL", _pll_summary(result.stats["pll"])))
+        rows.extend(_runtime_warning_rows(getattr(result, "runtime_warnings", [])))
         out.print(_summary_table(result.trace, result.end_cycle, rows))
+    if args.engine != "python" and args.profile:
+        out.console.print(profiler.finish(args.target).table())
     return 0
 
 
@@ -656,6 +665,10 @@ def build_parser() -> argparse.ArgumentParser:
                    help="where --trace-cog writes its log (default: standard output)")
     r.add_argument("--no-progress", action="store_true", help="no progress bar")
     r.add_argument("-q", "--quiet", action="store_true", help="no summary")
+    _warning_options(r)
+    r.add_argument("--profile", action="store_true",
+                   help="also profile the run: cycles per Spin line and method per cog (slower; see "
+                        "'spinemu profile' for JSON, CSV and an annotated listing)")
     r.set_defaults(func=cmd_run)
 
     d = sub.add_parser("disasm", help="list an image: header, objects, bytecode, PASM",
@@ -728,6 +741,8 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--right-clock", type=_positive_int, default=CLOCK_DEFAULT)
     s.add_argument("--steps", type=_positive_int, metavar="N", help="compare only the first N steps")
     s.set_defaults(func=cmd_sidebyside)
+    _add_debug_parser(sub)
+    _add_profile_parser(sub)
     return p
 
 
@@ -775,18 +790,22 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
 
 def _render_error(err: SpinError) -> str:
     """The error's diagnostics, with paths under the working directory shown relative to it."""
+    return "\n".join(_render_error_diagnostic(d) for d in err.diagnostics)
+
+
+def _short_path(path):
+    """``path`` relative to the working directory when it lies under it."""
+    if path and os.path.isabs(path):
+        rel = os.path.relpath(path, os.getcwd())
+        if not rel.startswith(".."):
+            return rel
+    return path
+
+
+def _render_error_diagnostic(d) -> str:
     from dataclasses import replace
 
-    cwd = os.getcwd()
-
-    def short(path):
-        if path and os.path.isabs(path):
-            rel = os.path.relpath(path, cwd)
-            if not rel.startswith(".."):
-                return rel
-        return path
-
-    return "\n".join(replace(d, path=short(d.path)).render() for d in err.diagnostics)
+    return replace(d, path=_short_path(d.path)).render()
 
 
 def entry_point() -> None:
