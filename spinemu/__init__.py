@@ -11,8 +11,11 @@ The public API (see docs/api.md):
 * :class:`Chip` - the Propeller 1 emulator; :func:`run_spin` compiles (if needed) and runs.
 * :func:`run_bs2` - run a BASIC Stamp 2 PBASIC program.
 * :class:`PinTrace`, :func:`read_log` - pin traces and their files.
-* :func:`compare_traces`, :func:`decode_steps`, :func:`compare_stepper_traces`,
-  :func:`render_timeline`, :func:`plot_trace`, :func:`disassemble_image` - analysis.
+* :func:`compare_traces`, :func:`decode_steps`, :func:`decode_step_dir`,
+  :func:`compare_stepper_traces`, :func:`render_timeline`, :func:`plot_trace`,
+  :func:`plot_motion`, :func:`disassemble_image` - analysis.
+* :class:`StepperMotor`, :func:`motor_from_trace` - the bench's stepper motor: shaft
+  position, speed and acceleration from coil patterns or step/dir pulses.
 * :func:`translate_spin`, :func:`run_translated` - Spin to readable Python, and running it
   on the same chip model.
 * :class:`SerialConsole` - a serial terminal on a run's TX/RX pins (``parts=[console]``).
@@ -35,7 +38,8 @@ __version__ = "0.1.0"
 
 __all__ = [
     "SpinError", "PinTrace", "read_log", "compile_spin", "Chip", "run_spin", "run_bs2",
-    "compare_traces", "decode_steps", "compare_stepper_traces", "render_timeline", "plot_trace",
+    "compare_traces", "decode_steps", "decode_step_dir", "compare_stepper_traces", "render_timeline",
+    "plot_trace", "plot_motion", "StepperMotor", "motor_from_trace",
     "disassemble_image", "translate_spin", "run_translated", "SerialConsole", "Bench", "load_bench", "__version__",
 ]
 
@@ -43,6 +47,10 @@ _LAZY = {
     "Chip": ("spinemu.chip", "Chip"),
     "compare_traces": ("spinemu.analysis.compare", "compare_traces"),
     "decode_steps": ("spinemu.analysis.stepper", "decode_steps"),
+    "decode_step_dir": ("spinemu.analysis.stepper", "decode_step_dir"),
+    "plot_motion": ("spinemu.analysis.plot", "plot_motion"),
+    "StepperMotor": ("spinemu.bench.stepper_motor", "StepperMotor"),
+    "motor_from_trace": ("spinemu.bench.stepper_motor", "motor_from_trace"),
     "compare_stepper_traces": ("spinemu.analysis.stepper", "compare_stepper_traces"),
     "render_timeline": ("spinemu.analysis.view", "render_timeline"),
     "plot_trace": ("spinemu.analysis.plot", "plot_trace"),
@@ -106,10 +114,12 @@ def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] =
     from .chip import Chip
     from .image import ImageHeader, load_image
 
+    labels = None
     if isinstance(target, (bytes, bytearray)):
         data, name = bytes(target), "<image>"
     elif str(target).lower().endswith(".spin"):
-        data, name = compile_spin(target, include_dirs).binary, str(target)
+        prog = compile_spin(target, include_dirs)
+        data, name, labels = prog.binary, str(target), prog.dat_labels()
     else:
         with open(target, "rb") as f:
             data, name = f.read(), str(target)
@@ -119,7 +129,7 @@ def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] =
     limit = cycles
     if seconds is not None:
         limit = int(round(seconds * (ImageHeader.parse(image).clkfreq or 80_000_000)))
-    chip = Chip(image, compat=compat, inputs=inputs)
+    chip = Chip(image, compat=compat, inputs=inputs, labels=labels)
     if parts:
         from .bench import Bench
         (parts if isinstance(parts, Bench) else Bench(parts)).attach(chip)

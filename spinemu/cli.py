@@ -19,8 +19,10 @@ import time
 from typing import Optional, Sequence, TextIO
 
 from . import __version__
-from .cli_bench import RunBench, add_decode_parser, bench_options, decode_command
+from .cli_bench import RunBench, add_decode_parser, bench_options, chip_input_model, decode_command
 from .cli_console import ConsoleSession, console_options, console_wanted
+from .cli_tools import (_add_debug_parser, _add_profile_parser, _attach_profiler, _print_hints,
+                        _runtime_warning_log, _runtime_warning_rows, _warning_options)
 from .diagnostics import SpinError, UsageError
 
 __all__ = ["main", "entry_point", "build_parser"]
@@ -39,7 +41,8 @@ examples:
   spinemu run spin_src/examples/serial_echo.spin --baud 9600 --console
                                                          a serial console on P30/P31: type numbers
   spinemu trace show demo.log --pins 0..4                timeline of pins 0-4
-  spinemu trace steps demo.log --pins 1..4               stepper decoder
+  spinemu trace steps demo.log --pins 1..4               stepper decoder (coils)
+  spinemu trace steps accel.log --step-dir 0,1 --plot m.png   step/dir driver, motion plot
   spinemu trace decode uart run.log --pin 30 --baud 9600  serial text on a pin
   spinemu run spin_src/stepper_demo.spin --bench spin_src/stepper_demo.bench.toml
                                                          parts on the pins: the motor's steps per run
@@ -133,8 +136,7 @@ def cmd_compile(args, out: _Out) -> int:
     if _kind(args.source) != "spin":
         raise UsageError(f"'{args.source}' is not a .spin source file")
     prog = _compile(args.source, args.include, args.define)
-    for w in prog.warnings:
-        out.err_console.print(w.render() if hasattr(w, "render") else str(w), markup=False)
+    _print_hints(out, prog)
     target = args.output or os.path.splitext(args.source)[0] + ".binary"
     written = []
     if not args.eeprom or args.output:
@@ -190,6 +192,11 @@ def _progress_callback(out: _Out, total: Optional[int], clock_hz: int, enabled: 
     return progress, update
 
 
+def _spin_inputs(args, clock_hz: int):
+    """The chip's input model for ``--inputs``/``--input`` (the profiler's runs; ``run`` has a bench)."""
+    return chip_input_model(args, clock_hz, _compat(args))
+
+
 def _compat(args) -> str:
     return args.compat or "spinsim"
 
@@ -238,6 +245,7 @@ def cmd_run(args, out: _Out) -> int:
     if args.console_in_at is not None and not args.console_in:
         raise UsageError("--console-in-at needs --console-in FILE (the bytes to send)")
     image, source_map, prog = _load_target(args.target, args.include, args.define)
+    _print_hints(out, prog)
     from .image import ImageHeader, to_eeprom
 
     clock = ImageHeader.parse(image).clkfreq or CLOCK_DEFAULT
@@ -252,6 +260,8 @@ def cmd_run(args, out: _Out) -> int:
         if args.engine == "python":
             if kind != "spin":
                 raise UsageError("--engine python needs a .spin source (it translates the source)")
+            if args.trace_cog:
+                raise UsageError("--trace-cog works with the bytecode engine (leave out --engine python)")
             from .translate import run_translated
 
             result = run_translated(args.target, include_dirs=list(args.include or ()), max_cycles=limit,
@@ -260,16 +270,24 @@ def cmd_run(args, out: _Out) -> int:
         else:
             from .chip import Chip
 
+            log = _runtime_warning_log(args, out, prog)
             chip = Chip(eeprom if raw is not None and len(raw) == 32768 else image, compat=_compat(args),
-                        inputs=bench.chip_inputs(_compat(args)), source_map=source_map)
+                        inputs=bench.chip_inputs(_compat(args)), source_map=source_map,
+                        labels=prog.dat_labels() if prog is not None else None,
+                        warn=log if log is not None else False,
+                        debug_info=prog.debug_info() if prog is not None else None)
+            profiler = _attach_profiler(chip, prog) if args.profile else None
             bench.attach(chip)
-            progress, update = _progress_callback(out, limit, clock, not args.no_progress and not args.view and not
-                                                  (session and session.shows))
-            if progress is not None:
-                with progress:
-                    result = chip.run(max_cycles=limit, progress=update)
-            else:
-                result = chip.run(max_cycles=limit)
+            with _pasm_trace_sink(args, out, chip, prog) as sink:
+                for cog_id in args.trace_cog or ():
+                    chip.trace_cog(cog_id, sink)
+                progress, update = _progress_callback(out, limit, clock, not args.no_progress and not args.view
+                                                      and not (session and session.shows))
+                if progress is not None:
+                    with progress:
+                        result = chip.run(max_cycles=limit, progress=update)
+                else:
+                    result = chip.run(max_cycles=limit)
     wall = time.perf_counter() - t0
     _write_trace(args, bench.trace(result.trace))
     bench.finish()
@@ -287,6 +305,7 @@ def cmd_run(args, out: _Out) -> int:
         rows = [("ended", reason),
                 ("cogs", f"{started} started, {stopped} stopped"),
                 ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
+        rows += _pasm_rows(result)
         if args.trace:
             rows.append(("trace", f"{args.trace} ({len(result.trace.changes)} changes)"))
         if session:
@@ -294,7 +313,10 @@ def cmd_run(args, out: _Out) -> int:
         rows += bench.rows()
         if result.stats.get("pll"):
             rows.append(("PLL", _pll_summary(result.stats["pll"])))
+        rows.extend(_runtime_warning_rows(getattr(result, "runtime_warnings", [])))
         out.print(_summary_table(result.trace, result.end_cycle, rows))
+    if args.engine != "python" and args.profile:
+        out.console.print(profiler.finish(args.target).table())
     return 0
 
 
@@ -310,6 +332,56 @@ def _pll_summary(plls: list) -> str:
     if len(plls) > 8:
         lines.append(f"... and {len(plls) - 8} more")
     return "\n".join(lines)
+
+
+def _pasm_rows(result) -> list:
+    """Summary rows for the PASM cogs a run started: where, and how many instructions they ran."""
+    counts = result.stats.get("pasm_instructions_per_cog", {})
+    rows = []
+    for cycle, cog_id, kind, detail in result.cog_events:
+        if kind == "start" and detail.startswith("PASM"):
+            rows.append((f"cog {cog_id}", f"{detail} at cycle {cycle:,}"))
+    if counts:
+        rows.append(("PASM", ", ".join(f"cog {k}: {n:,} instructions" for k, n in sorted(counts.items()))))
+    return rows
+
+
+class _pasm_trace_sink:
+    """``--trace-cog``: a callback writing one line per PASM instruction to the chosen file (or stdout).
+
+    With the program's source, the DAT labels of the code the cog was loaded
+    from name its registers and jump targets (a label counts when its cog
+    address matches its distance from the start of the loaded code).
+    """
+
+    def __init__(self, args, out: "_Out", chip, prog):
+        self.path = getattr(args, "trace_cog_file", None) if getattr(args, "trace_cog", None) else None
+        self.stream = out.stdout
+        self.file = None
+        self.chip = chip
+        self.dat = prog.dat_symbols() if prog is not None else []
+        self.symbols: dict = {}         # code address -> {cog address: label}
+
+    def _symbols(self, code: int) -> dict:
+        table = self.symbols.get(code)
+        if table is None:
+            table = self.symbols[code] = {cog: name for hub, cog, name in self.dat
+                                          if hub >= code and (hub - code) == 4 * cog}
+        return table
+
+    def __enter__(self):
+        if self.path and self.path != "-":
+            try:
+                self.file = self.stream = open(self.path, "w", encoding="utf-8")
+            except OSError as e:
+                raise UsageError(f"cannot write '{self.path}': {e.strerror}") from None
+        write, cogs = self.stream.write, self.chip.cogs
+        return lambda step: write(step.text(self._symbols(cogs[step.cog].code_addr)) + "\n")
+
+    def __exit__(self, *exc):
+        if self.file is not None:
+            self.file.close()
+        return False
 
 
 _PBASIC_REASONS = {"end": "END statement", "stop": "STOP statement", "time": "time limit",
@@ -454,16 +526,46 @@ def cmd_trace(args, out: _Out) -> int:
         out.print(f"{args.file} -> {args.output}")
         return 0
     if action == "steps":
-        from .analysis.stepper import decode_steps, render_steps
-
-        if not args.pins:
-            raise UsageError("trace steps needs --pins with the four coil pins, e.g. --pins 1..4")
-        steps = decode_steps(trace, _pins(args.pins))
-        out.stdout.write(render_steps(steps, trace.clock_hz, limit=args.limit) + "\n")
-        return 0
+        return _trace_steps(args, trace, start, end, out)
     if action == "decode":
         return decode_command(args, trace, out)
     raise UsageError(f"unknown trace action {action!r}")
+
+
+def _trace_steps(args, trace, start: int, end: int, out: _Out) -> int:
+    from .analysis.stepper import decode_step_dir, decode_steps, render_steps
+    from .bench.stepper_motor import motor_from_trace
+
+    if bool(args.pins) == bool(args.step_dir):
+        raise UsageError("trace steps needs either --pins with the four coil pins (e.g. --pins 1..4) "
+                         "or --step-dir with the step and dir pins (e.g. --step-dir 0,1)")
+    window = dict(start=start / trace.clock_hz, end=end / trace.clock_hz)
+    if args.pins:
+        coils = _pins(args.pins)
+        if len(coils) != 4:
+            raise UsageError(f"--pins needs the four coil pins, got {len(coils)}: {args.pins}")
+        drive = dict(coils=coils)
+        steps = decode_steps(trace, coils, **window)
+    else:
+        pins = _pins(args.step_dir)
+        if len(pins) != 2:
+            raise UsageError(f"--step-dir needs two pins, STEP,DIR (e.g. 0,1), got {args.step_dir!r}")
+        drive = dict(step=pins[0], dir=pins[1])
+        steps = decode_step_dir(trace, pins[0], pins[1], **window)
+    out.stdout.write(render_steps(steps, trace.clock_hz, limit=args.limit, max_segments=args.segments) + "\n")
+    if args.pull_in is not None or args.plot:
+        try:
+            motion = motor_from_trace(trace, pull_in=args.pull_in, **drive)
+        except ValueError as e:
+            raise UsageError(str(e))
+        out.stdout.write("\n" + motion.summary() + "\n")
+        if args.plot:
+            from .analysis.plot import plot_motion
+
+            plot_motion(motion, path=args.plot, title=os.path.basename(args.file),
+                        start=window["start"], end=window["end"])
+            out.print(f"{args.file} -> {args.plot}")
+    return 0
 
 
 def cmd_sidebyside(args, out: _Out) -> int:
@@ -479,6 +581,16 @@ def cmd_sidebyside(args, out: _Out) -> int:
 
 
 # ----------------------------------------------------------------------------- parser
+_TRACE_DESCRIPTIONS = {
+    "steps": "Decode a stepper motor's steps from a trace log: four coil pins in table order (--pins) "
+             "or a step/direction driver (--step-dir STEP,DIR). Prints the runs at one speed and the "
+             "first steps. --pull-in and --plot run the steps through the bench's stepper motor "
+             "(docs/stepper_motor.md): the steps a motor with that pull-in rate misses, and position, "
+             "speed and acceleration against time. --start/--end (cycles) limit the listed steps and the plot "
+             "to a window (the motor runs through the whole trace).",
+}
+
+
 def _obj_search_option(p) -> None:
     p.add_argument("-L", "-I", dest="include", action="append", metavar="DIR",
                    help="add a folder to search for OBJ files (after the source's own folder)")
@@ -540,8 +652,17 @@ def build_parser() -> argparse.ArgumentParser:
                    help="BASIC Stamp only: exact command durations, or with per-instruction interpreter time")
     console_options(r)
     bench_options(r)
+    r.add_argument("--trace-cog", type=int, action="append", choices=range(8), metavar="N",
+                   help="log every PASM instruction cog N executes: cycle, address, disassembly, flags after it "
+                        "and the value written (repeatable; bytecode engine only)")
+    r.add_argument("--trace-cog-file", metavar="FILE", default="-",
+                   help="where --trace-cog writes its log (default: standard output)")
     r.add_argument("--no-progress", action="store_true", help="no progress bar")
     r.add_argument("-q", "--quiet", action="store_true", help="no summary")
+    _warning_options(r)
+    r.add_argument("--profile", action="store_true",
+                   help="also profile the run: cycles per Spin line and method per cog (slower; see "
+                        "'spinemu profile' for JSON, CSV and an annotated listing)")
     r.set_defaults(func=cmd_run)
 
     d = sub.add_parser("disasm", help="list an image: header, objects, bytecode, PASM",
@@ -574,8 +695,9 @@ def build_parser() -> argparse.ArgumentParser:
     tc.add_argument("--tolerance", type=float, default=0.005, help="worst timing error to pass (default 0.005)")
     tc.add_argument("--slack", type=int, default=16_000, help="cycles of fixed offset forgiven (default 16000)")
     for name, help_ in (("show", "timeline of the pins in the terminal"), ("plot", "waveform plot to an image file"),
-                        ("convert", "convert a log to VCD"), ("steps", "decode stepper coil patterns into steps")):
-        a = ts.add_parser(name, help=help_, parents=[clock])
+                        ("convert", "convert a log to VCD"),
+                        ("steps", "decode stepper coil patterns or step/dir pulses into steps")):
+        a = ts.add_parser(name, help=help_, parents=[clock], description=_TRACE_DESCRIPTIONS.get(name, help_))
         a.add_argument("file")
         if name in ("plot", "convert"):
             a.add_argument("-o", "--output", required=True, metavar="FILE")
@@ -588,7 +710,17 @@ def build_parser() -> argparse.ArgumentParser:
             a.add_argument("--width", type=_positive_int, default=64, help="columns of the timeline")
             a.add_argument("--changes", type=int, default=0, metavar="N", help="also list the first N changes")
         if name == "steps":
+            a.add_argument("--step-dir", metavar="STEP,DIR",
+                           help="decode a step/direction driver instead: its step and dir pins, e.g. 0,1 "
+                                "(a step per high pulse of at least 1 us, forward while DIR is high)")
             a.add_argument("--limit", type=int, default=20, metavar="N", help="show the first N steps")
+            a.add_argument("--segments", type=int, default=40, metavar="N",
+                           help="show the first N segments (runs at one speed; default 40)")
+            a.add_argument("--pull-in", type=_positive_float, metavar="RATE",
+                           help="run the steps through the motor model with this pull-in rate (steps/s) "
+                                "and report the steps it misses")
+            a.add_argument("--plot", metavar="FILE",
+                           help="plot position, speed and acceleration against time (PNG, SVG or PDF)")
     add_decode_parser(ts, [clock])
     tr.set_defaults(func=cmd_trace)
 
@@ -603,6 +735,8 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--right-clock", type=_positive_int, default=CLOCK_DEFAULT)
     s.add_argument("--steps", type=_positive_int, metavar="N", help="compare only the first N steps")
     s.set_defaults(func=cmd_sidebyside)
+    _add_debug_parser(sub)
+    _add_profile_parser(sub)
     return p
 
 
@@ -650,18 +784,22 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
 
 def _render_error(err: SpinError) -> str:
     """The error's diagnostics, with paths under the working directory shown relative to it."""
+    return "\n".join(_render_error_diagnostic(d) for d in err.diagnostics)
+
+
+def _short_path(path):
+    """``path`` relative to the working directory when it lies under it."""
+    if path and os.path.isabs(path):
+        rel = os.path.relpath(path, os.getcwd())
+        if not rel.startswith(".."):
+            return rel
+    return path
+
+
+def _render_error_diagnostic(d) -> str:
     from dataclasses import replace
 
-    cwd = os.getcwd()
-
-    def short(path):
-        if path and os.path.isabs(path):
-            rel = os.path.relpath(path, cwd)
-            if not rel.startswith(".."):
-                return rel
-        return path
-
-    return "\n".join(replace(d, path=short(d.path)).render() for d in err.diagnostics)
+    return replace(d, path=_short_path(d.path)).render()
 
 
 def entry_point() -> None:

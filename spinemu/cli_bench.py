@@ -16,7 +16,7 @@ from typing import Optional
 
 from .diagnostics import SpinError, UsageError
 
-__all__ = ["bench_options", "RunBench", "add_decode_parser", "decode_command"]
+__all__ = ["bench_options", "RunBench", "chip_input_model", "add_decode_parser", "decode_command"]
 
 #: warnings shown per part (the rest are counted)
 _WARNINGS_SHOWN = 5
@@ -52,21 +52,12 @@ class RunBench:
 
     def __init__(self, args, out, *, clock_hz: int, pin_count: int, engine: str,
                  eeprom_image: Optional[bytes] = None, session=None):
-        from .bench import Bench, I2cEeprom, parse_input_spec
+        from .bench import Bench, I2cEeprom
         from .bench.board import BenchPinError
         from .bench.benchfile import load_bench
-        from .bench.inputs import InputSpecError
 
         self.args, self.out, self.clock_hz, self.pin_count = args, out, clock_hz, pin_count
-        self.spec: dict = {}
-        if args.stimulus:
-            try:
-                self.spec = parse_input_spec(args.stimulus)
-            except InputSpecError as e:
-                raise UsageError(f"--input: {e}")
-            bad = [p for p in self.spec if not 0 <= p < pin_count]
-            if bad:
-                raise UsageError(f"--input: pin {bad[0]} does not exist on {engine} (pins are 0..{pin_count - 1})")
+        self.spec = _parse_spec(args, pin_count, engine)
         self.bench = load_bench(args.bench, pin_count=pin_count, engine=engine) if args.bench else Bench()
         self.console = session.console if session is not None else None
         if self.console is not None:
@@ -102,12 +93,7 @@ class RunBench:
 
     def chip_inputs(self, compat: str):
         """The chip's input model: the pull mode, and the ``--input`` waveforms on top."""
-        if not self.spec:
-            return self.args.inputs              # None: the compat mode's own default
-        from .bench import PinWaveforms
-
-        pull = self.args.inputs or ("pullup" if compat == "spinsim" else "pulldown")
-        return PinWaveforms(self.spec, self.clock_hz, base=0xFFFFFFFF if pull == "pullup" else 0, pin_count=32)
+        return _input_model(self.spec, self.args.inputs, compat, self.clock_hz)
 
     def attach(self, engine) -> None:
         """Put the bench on ``engine`` (before its run)."""
@@ -149,6 +135,37 @@ class RunBench:
         if self.eeprom is not None and self.args.eeprom_out:
             rows.append(("EEPROM", f"saved to {self.args.eeprom_out}"))
         return rows
+
+
+def _parse_spec(args, pin_count: int, engine: str) -> dict:
+    """``--input`` read by the one parser every engine uses (usage errors name the option)."""
+    from .bench import parse_input_spec
+    from .bench.inputs import InputSpecError
+
+    if not args.stimulus:
+        return {}
+    try:
+        spec = parse_input_spec(args.stimulus)
+    except InputSpecError as e:
+        raise UsageError(f"--input: {e}")
+    bad = [p for p in spec if not 0 <= p < pin_count]
+    if bad:
+        raise UsageError(f"--input: pin {bad[0]} does not exist on {engine} (pins are 0..{pin_count - 1})")
+    return spec
+
+
+def _input_model(spec: dict, pull, compat: str, clock_hz: int):
+    if not spec:
+        return pull                               # None: the compat mode's own default
+    from .bench import PinWaveforms
+
+    pull = pull or ("pullup" if compat == "spinsim" else "pulldown")
+    return PinWaveforms(spec, clock_hz, base=0xFFFFFFFF if pull == "pullup" else 0, pin_count=32)
+
+
+def chip_input_model(args, clock_hz: int, compat: str):
+    """The chip's input model from ``--inputs`` and ``--input`` (for runs without a bench)."""
+    return _input_model(_parse_spec(args, 32, "the Propeller"), args.inputs, compat, clock_hz)
 
 
 class _LiveView:

@@ -132,3 +132,11 @@ PASM_RANGE = "operand value ${value:X} is out of range (0..$1FF)"
 PASM_UNAVAILABLE = "PASM instructions are not supported yet"
 DATA_SIZE_OVERRIDE = "a size override cannot be larger than the data size"
 RES_AFTER_DATA = "res cannot be followed by data or instructions in the same org"
+
+# ----------------------------------------------------------------------------- hints (change no byte)
+HINT_ASSIGNING_COMPARE = ("'{op}' assigns in Spin: '{target} {op} ...' sets {target} to ({target} {cmp} ...) and gives "
+                          "that; to compare '{what}' write '{right}'")
+HINT_ROTATE_NOT_MINUS = ("'{left}<-{right}' rotates {left} left by {right} ('<-' is rotate-left); to compare with "
+                         "a negative number write '{left} < -{right}'")
+HINT_SHADOWED_OBJECT = ("'{name}' is taken from {used}; {other} is also there and differs (the folder "
+                        "listed first wins)")

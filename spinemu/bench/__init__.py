@@ -23,9 +23,11 @@ files (``--bench board.toml``) are read by :mod:`spinemu.bench.benchfile`.
 
 Parts: :class:`Led`, :class:`Button`, :class:`RcCircuit`,
 :class:`Potentiometer`, :class:`Servo`, :class:`Lcd` (HD44780, 4/8-bit),
-:class:`SerialLcd`, :class:`I2cEeprom` (24LC256/24LC512), :class:`Stepper`,
-:class:`SerialConsole`, and the live decoders :class:`I2cMonitor`,
-:class:`SpiMonitor`, :class:`PulseMonitor`.
+:class:`SerialLcd`, :class:`I2cEeprom` (24LC256/24LC512), :class:`Stepper`
+(coils or a step/dir driver, through the stepper motor model
+:class:`~spinemu.bench.stepper_motor.StepperMotor`: steps per run, shaft
+position, missed steps), :class:`SerialConsole`, and the live decoders
+:class:`I2cMonitor`, :class:`SpiMonitor`, :class:`PulseMonitor`.
 
 Also here: input models (:mod:`~spinemu.bench.inputs`: pull modes,
 stimuli, ``--input``), UART framing (:mod:`~spinemu.bench.uart`), the I2C,
@@ -43,7 +45,8 @@ __all__ = ["Bench", "BenchInputs", "BenchPinError", "Part", "ReactivePart", "Par
            "Led", "Button", "RcCircuit", "Potentiometer", "Servo", "Lcd", "SerialLcd", "I2cEeprom", "Stepper",
            "SerialConsole", "I2cMonitor", "SpiMonitor", "PulseMonitor", "PART_KINDS",
            "PinStimulus", "PinWaveforms", "parse_input_spec",
-           "UartFormat", "UartWaveform", "UartDecoder", "Frame", "decode_uart", "frame_bits"]
+           "UartFormat", "UartWaveform", "UartDecoder", "Frame", "decode_uart", "frame_bits",
+           "StepperMotor", "motor_from_trace"]
 
 # names are imported on first use, so that an engine importing one module (the chip: input models)
 # does not load every part
@@ -54,7 +57,7 @@ _WHERE = {
     "SerialConsole": "console", "I2cMonitor": "monitors", "SpiMonitor": "monitors", "PulseMonitor": "monitors",
     "PinStimulus": "inputs", "PinWaveforms": "inputs", "parse_input_spec": "inputs",
     "UartFormat": "uart", "UartWaveform": "uart", "UartDecoder": "uart", "Frame": "uart", "decode_uart": "uart",
-    "frame_bits": "uart",
+    "frame_bits": "uart", "StepperMotor": "stepper_motor", "motor_from_trace": "stepper_motor",
 }
 _KINDS = ("Led", "Button", "RcCircuit", "Potentiometer", "Servo", "Lcd", "SerialLcd", "I2cEeprom", "Stepper",
           "SerialConsole", "I2cMonitor", "SpiMonitor", "PulseMonitor")

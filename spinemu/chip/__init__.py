@@ -1,4 +1,4 @@
-"""The Propeller 1 chip emulator: runs Spin bytecode images cycle by cycle.
+"""The Propeller 1 chip emulator: runs Spin bytecode and PASM cogs, cycle by cycle.
 
 >>> from spinemu.chip import Chip, RunResult
 """

@@ -8,7 +8,8 @@ and cog 0 starts the ROM's Spin interpreter on the first method.  Time is one
 which it starts its next bytecode, and the scheduler (:mod:`.scheduler`)
 always advances the cog whose next hub access comes first, jumping over time
 in which every cog waits.  Pins are in :mod:`.pins`, live pin listeners in
-:mod:`.listen`, the interpreter in :mod:`.spin`.
+:mod:`.listen`, the Spin interpreter in :mod:`.spin`, PASM cogs in
+:mod:`.pasm_cog`.
 
 Two compatibility modes (``compat``):
 
@@ -39,8 +40,8 @@ from ..bench.inputs import make_input_model
 from ..image import BOOT_FRAME, HUB_SIZE, ImageHeader, load_image
 from ..trace import PinTrace
 from .blocks import HOT as BLOCK_THRESHOLD
-from .cog import PARKED, RUNNING, STOPPED, IDLE_PASM, Cog
-from .control import CogStopped, Reschedule
+from .cog import PARKED, PIN_WAIT, RUNNING, STOPPED, Cog
+from .control import CogStopped, Halted, Reschedule
 from .listen import Listeners
 from .pins import Pins
 from .registers import Registers
@@ -61,6 +62,16 @@ _NEVER = NEVER
 _FINAL_REASONS = ("all cogs stopped", "deadlock", "stalled")
 
 
+def _spinsim_phase(cog_id: int) -> int:
+    """Cog ``cog_id``'s hub window in spinsim: ``t mod 16`` when its hub instructions complete.
+
+    Measured (spinsim 0.99 ``-p``, a hub loop started in each cog): cogs 0
+    and 1 at 8, 2 and 3 at 12, 4 and 5 at 0, 6 and 7 at 4 (the silicon's
+    windows 2 clocks apart, met on spinsim's 4-cycle instruction grid).
+    """
+    return (8 + 4 * (cog_id >> 1)) & 15
+
+
 @dataclass
 class RunResult:
     """What a run produced.
@@ -71,11 +82,15 @@ class RunResult:
         end_cycle: the cycle the run ended at.
         reason: ``"all cogs stopped"``, ``"cycle limit"``, ``"reboot"``,
             ``"deadlock"`` (every cog waits on pins that can never change),
-            ``"stalled"`` (the cogs left spin in loops that can never end) or
-            ``"only PASM cogs left"`` (PASM is not emulated).
-        cog_events: ``(cycle, cog, "start" | "stop", detail)``.
+            or ``"stalled"`` (the cogs left spin in loops that can never end).
+        cog_events: ``(cycle, cog, "start" | "stop", detail)``; a PASM
+            start's detail names its hub address and, with ``labels``, its
+            DAT label.
         warnings: things the emulation could not do faithfully.
-        stats: bytecodes executed (total and per cog), wall time, ...
+        stats: bytecodes executed (total and per cog), PASM instructions
+            (``pasm_instructions``, ``pasm_instructions_per_cog``), wall time, ...
+        runtime_warnings: the program's likely mistakes the run saw
+            (:class:`spinemu.runtime_warnings.RunWarning`, one per place).
     """
 
     trace: PinTrace
@@ -85,6 +100,7 @@ class RunResult:
     cog_events: list = field(default_factory=list)
     warnings: list = field(default_factory=list)
     stats: dict = field(default_factory=dict)
+    runtime_warnings: list = field(default_factory=list)
 
 
 class Chip(Pins, Listeners, Scheduler):
@@ -98,9 +114,19 @@ class Chip(Pins, Listeners, Scheduler):
             a stimulus (see :mod:`spinemu.chip.inputs`).  Default: pull-down
             in chip mode, pull-up in spinsim mode (spinsim reads them as 1).
         source_map: optional ``hub_addr -> (path, line)`` for fault messages.
+        labels: optional ``hub_addr -> name`` of DAT labels (a compiled
+            program's ``dat_labels()``); a PASM cog's start then names its label.
         fast_forward: skip provably idle busy-wait loops (results unchanged).
         compile_blocks: run hot bytecode as compiled blocks (:mod:`.blocks`;
             results unchanged).
+        warn: runtime warnings (:mod:`spinemu.runtime_warnings`): ``True``
+            (default) collects them in ``RunResult.runtime_warnings``, ``False``
+            turns the checks off, or pass your own
+            :class:`~spinemu.runtime_warnings.WarningLog` (``werror``, a sink).
+        debug_info: the program's :class:`spinemu.debuginfo.DebugInfo` (from
+            ``CompiledProgram.debug_info()``): warnings then name variables and
+            methods, point at file:line:col, and the checks that need names
+            (stack arrays, uninitialized locals) run.
 
     Raises:
         ImageError: if ``image`` is not a valid Propeller image.
@@ -115,7 +141,8 @@ class Chip(Pins, Listeners, Scheduler):
 
     def __init__(self, image: bytes, *, compat: str = "spinsim", inputs=None,
                  source_map: Optional[Callable] = None, fast_forward: bool = True,
-                 timing: Optional[Timing] = None, compile_blocks: bool = True):
+                 timing: Optional[Timing] = None, compile_blocks: bool = True, labels=None, warn=True,
+                 debug_info=None):
         if compat not in COMPAT_MODES:
             raise ValueError(f"compat must be one of {COMPAT_MODES}, not {compat!r}")
         binary = load_image(bytes(image))
@@ -123,6 +150,7 @@ class Chip(Pins, Listeners, Scheduler):
         self.compat = compat
         self.spinsim = compat == "spinsim"
         self.source_map = source_map
+        self.labels = labels or {}
         self.fast_forward = fast_forward
         self.compile_blocks = compile_blocks
         self.timing = timing or load_timing()
@@ -140,9 +168,10 @@ class Chip(Pins, Listeners, Scheduler):
         self.mem_longs = view.cast("I")
 
         self.cogs = [Cog(i) for i in range(8)]
+        self._pasm_tracers: dict = {}
         self._cogs_changed = True       # a cog's state changed: the scheduler lists the running ones again
         for cog in self.cogs:
-            cog.hub_phase = 8 if self.spinsim else (8 + 2 * cog.id) & 15
+            cog.hub_phase = _spinsim_phase(cog.id) if self.spinsim else (8 + 2 * cog.id) & 15
         self.locks = [False] * 8
         self.lock_used = [False] * 8
         if self.spinsim:
@@ -153,13 +182,33 @@ class Chip(Pins, Listeners, Scheduler):
         self.counters = Counters(self)
         self.counters_on = False        # some counter is in an output mode (else pins skip them)
         self.registers = Registers(self)
-        #: one flag per hub long: set while a parked busy loop (fastforward.py) reads it
+        #: one flag per hub long: set while a parked busy loop (fastforward.py) reads it; the
+        #: other bits of blocks.py (CODE, PROGRAM, WATCHPOINT) also send writes to watch_hit
         self.watch = bytearray(0x10000 >> 2)
         self._parked: list = []
+        self.debug_info = debug_info
+        #: called as f(cog, cycle) right after a cog changes its DIRA/OUTA (before other cogs run);
+        #: f(cog, hub_addr, op, cycle) before a write to a long with a PROGRAM or WATCHPOINT watch bit
+        #: (runtime checks, debuggers; the bench's live listeners are pin_listeners, listen.py)
+        self.pin_hooks: list = []
+        self.write_hooks: list = []
+        #: bytecode addresses no compiled block may start at or run through; calls stay interpreted
+        self.interpret_only: set = set()
+        self.interpret_calls = False
+        #: a debugger or profiler: ``before(chip, cog)`` / ``after(chip, cog, pc, t)`` around every
+        #: bytecode, run by the instrumented loop (Scheduler._run_spin_probed); None for full speed
+        self.probe = None
+        self.warning_log = None
+        self.checks = None
+        if warn is not False:
+            from .checks import RuntimeChecks
+            self.warning_log = _default_log(debug_info, source_map) if warn is True else warn
+            self.checks = RuntimeChecks(self, self.warning_log, debug_info)
         self.handlers = build_handlers(self, self.timing)
         self.access_at = access_offsets()
         self._handlers = list(self.handlers)      # the real ones, while a preemption is pending
         self._preempt = False
+        self._halt_reason = None
         self.pin_events: list = []          # (cycle, seq, cog, dira, outa, running)
         self.pin_fold = PinFold(self)       # pin events and counter outputs folded into pin states (pinfold.py)
         self._init_listeners()              # live pin listeners (listen.py)
@@ -190,6 +239,19 @@ class Chip(Pins, Listeners, Scheduler):
         else:
             self._run_plain = self._run_spin
         self.now = 0
+        #: the run's cycle limit (engines that run ahead never pass it)
+        self.run_limit = _NEVER
+        self._last_stop = 0
+        self._last_limit = _NEVER       # the limit of the latest advance()
+        self.pasm = None            # the PASM engine (pasm_cog.py), made when a PASM cog starts
+        self._clock_mode = self.header.clkmode
+        if self.checks is not None:
+            self.checks.install()
+
+    def wrap_handler(self, op: int, handler) -> None:
+        """Replace the interpreter's handler for bytecode ``op`` (runtime checks, tools)."""
+        self.handlers[op] = handler
+        self._handlers[op] = handler
 
 
     @property
@@ -231,6 +293,8 @@ class Chip(Pins, Listeners, Scheduler):
         c.scratch[9] = c.id
         c.dcall = 0
         c.t = self.timing.interpreter_start(t_first, c.hub_phase)
+        if self.checks is not None:
+            self.checks.cog_started(c)
         self.cog_events.append((t_first, c.id, "start",
                                 f"Spin method at ${c.pc:04X}" + (f" (started by cog {by.id})" if by else "")))
         if keep != (0, 0):
@@ -248,16 +312,28 @@ class Chip(Pins, Listeners, Scheduler):
         c.pin_wait = None
         c.t = _NEVER
         self.now = max(self.now, t)
+        self._last_stop = max(self._last_stop, t)
         self.cog_events.append((t, c.id, "stop", why))
         self._seq += 1
         self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, False))
 
     def coginit(self, c: Cog, cog_id: int, code: int, par: int, tf: int) -> int:
-        """COGINIT/COGNEW from cog ``c``: returns the started cog's id, or -1 (as u32)."""
-        done = tf + self.timing.coginit_done
+        """COGINIT/COGNEW bytecode of Spin cog ``c``: returns the started cog's id, or -1 (as u32)."""
+        return self.start_cog(c, cog_id, code, par, tf + self.timing.coginit_done)
+
+    def start_cog(self, c: Cog, cog_id: int, code: int, par: int, done: int) -> int:
+        """Start cog ``cog_id`` (8 and up: the first free one) on ``code`` with ``par``.
+
+        ``done`` is the cycle the COGINIT's hub access completes (a running
+        target stops then).  The interpreter's address starts a Spin cog,
+        any other address a PASM cog.  Returns the cog's id, or -1 (as u32)
+        when no cog is free.
+        """
         if cog_id >= 8:                         # the ROM clamps: 8 and up = "a free cog"
             free = [k for k in self.cogs if k.state == STOPPED]
             if not free:
+                if self.checks is not None:
+                    self.checks.no_free_cog(c, code, par, done)
                 return 0xFFFFFFFF
             target = free[0]
         else:
@@ -265,7 +341,9 @@ class Chip(Pins, Listeners, Scheduler):
         if target.state != STOPPED:
             self.stop_cog(target, done, f"restarted by cog {c.id}")
         if self.spinsim:
-            t_first = done + _SPINSIM_START_CYCLES
+            # the new cog's first slot is the COGINIT's last cycle, one step later
+            # when spinsim has already stepped the target in that cycle (a lower id, or itself)
+            t_first = done + _SPINSIM_START_CYCLES + (4 if target.id <= c.id else 0)
         else:
             t_first = done + COG_LOAD_CYCLES
         if (code & 0xFFFC) == INTERPRETER_ENTRY & 0xFFFC:
@@ -275,16 +353,39 @@ class Chip(Pins, Listeners, Scheduler):
         return target.id
 
     def _start_pasm(self, target: Cog, code: int, par: int, t_first: int, by: Cog) -> None:
-        target.reset_registers()
-        target.state = IDLE_PASM
-        self._cogs_changed = True
-        target.engine = "pasm"
-        target.par = par
-        target.t = _NEVER
-        msg = (f"cog {target.id} was started by cog {by.id} on PASM code at hub ${code:04X} "
-               f"(PAR ${par:04X}); PASM is not emulated, so that cog stays idle and drives no pins")
-        self.warnings.append(msg)
-        self.cog_events.append((t_first, target.id, "start", f"PASM at ${code:04X} (not emulated)"))
+        if self.pasm is None:
+            from .pasm_cog import PasmEngine
+            self.pasm = PasmEngine(self)
+            for cog_id, callback in self._pasm_tracers.items():
+                self.pasm.tracers[cog_id] = callback
+        self.pasm.start(target, code, par, t_first, by)
+
+    def code_label(self, hub_addr: int) -> str:
+        """The DAT label at ``hub_addr`` (from ``labels``), else the source line, else ``""``."""
+        name = self.labels.get(hub_addr & 0xFFFF)
+        if name:
+            return name
+        if self.source_map is not None:
+            try:
+                found = self.source_map(hub_addr & 0xFFFF)
+            except Exception:  # a broken map must not stop the run
+                found = None
+            if found:
+                return f"{found[0]}:{found[1]}"
+        return ""
+
+    def trace_cog(self, cog_id: int, callback: Callable) -> None:
+        """Report every PASM instruction cog ``cog_id`` executes to ``callback``.
+
+        ``callback(step)`` gets a :class:`spinemu.chip.pasm_cog.PasmStep`
+        (cycle, cog, address, long, whether it ran, flags after it, the value
+        written); ``step.text()`` is one log line.  The traced cog runs an
+        instrumented loop; the others are not slowed down.  Call before
+        :meth:`run`.
+        """
+        self._pasm_tracers[cog_id] = callback
+        if self.pasm is not None:
+            self.pasm.tracers[cog_id] = callback
 
     def cogstop(self, c: Cog, cog_id: int, tf: int, rest: int) -> int:
         t = tf + self.timing.cogstop_at
@@ -307,8 +408,8 @@ class Chip(Pins, Listeners, Scheduler):
         return 0xFFFFFFFF
 
     def lockret(self, i: int) -> None:
-        if not (self.spinsim and i == 0):
-            self.lock_used[i] = False
+        # spinsim too frees lock 0 (checked on spinsim 0.99: LOCKRET(0), then LOCKNEW gives 0)
+        self.lock_used[i] = False
 
     def lockset(self, i: int, value: bool) -> bool:
         was = self.locks[i]
@@ -316,6 +417,12 @@ class Chip(Pins, Listeners, Scheduler):
         return was
 
     # ------------------------------------------------------------------ clock, video
+    def set_clock_mode(self, mode: int) -> None:
+        """CLKSET from PASM (the CLK register only; clkfreq in hub RAM is the program's business)."""
+        if mode != self._clock_mode:
+            self._clock_mode = mode
+            self.warnings.append(f"CLKSET set the clock mode to ${mode:02X}; trace times stay in cycles")
+
     def set_clock(self, mode: int, freq: int) -> None:
         if freq != self.clock_hz:
             self.warnings.append(
@@ -352,27 +459,101 @@ class Chip(Pins, Listeners, Scheduler):
             raise RuntimeError("a Chip runs once; make a new Chip to run again")
         self._started = True
         wall = time.perf_counter()
-        limit = _NEVER if max_cycles is None else max_cycles
+        reason = self.advance(max_cycles, progress)
+        return self.result(reason, time.perf_counter() - wall)
+
+    def advance(self, until: Optional[int] = None, progress: Optional[Callable[[int], None]] = None) -> str:
+        """Run on from where the chip is until cycle ``until`` (``None``: until every cog stops).
+
+        Unlike :meth:`run`, this can be called again and again (the test
+        harness and the debugger do): the chip goes on exactly as one long
+        run would.  Returns why it stopped: a :class:`RunResult` reason, or
+        the reason a probe gave when it stopped the run (a breakpoint).
+        """
+        limit = _NEVER if until is None else until
         if not self._booted:
             self._boot()
+        self._cogs_changed = True
+        self._last_limit = limit
         self._listen_end = limit + 1 if limit < _NEVER else _NEVER
-        reason = self._schedule(limit, progress)
-        end = self.now if reason != "cycle limit" else limit
+        try:
+            return self._schedule(limit, progress)
+        except Halted as h:
+            return h.reason
+        finally:
+            if self._halt_reason is not None:   # a halt nobody reached: forget it
+                self._halt_reason = None
+                self.handlers[:] = self._handlers
+                self._preempt = False
+
+    def result(self, reason: str = "cycle limit", wall: float = 0.0) -> RunResult:
+        """The :class:`RunResult` of the run so far (trace, hub RAM, statistics) at cycle ``now``."""
+        end = self._last_limit if reason == "cycle limit" and self._last_limit < _NEVER else self.now
+        if reason == "all cogs stopped":        # an engine may stop a cog ahead of another's last events
+            end = max(end, self._last_stop)
         if self.pin_listeners:      # pins nothing can change any more stay as they are for ever
             self._listen_end = end + 1
             self._deliver_pins(_NEVER if reason in _FINAL_REASONS else end + 1, end + 1)
             self._run_ended(end)
-        wall = time.perf_counter() - wall
         trace = self._build_trace(end)
-        self.warnings.extend(self.counters.end_warnings(end))
+        warnings = list(self.warnings) + list(self.counters.end_warnings(end))
         per_cog = {c.id: c.bytecodes for c in self.cogs if c.bytecodes}
+        pasm_cogs = {c.id: c.instructions for c in self.cogs if c.instructions}
         stats = {"bytecodes": sum(per_cog.values()), "bytecodes_per_cog": per_cog,
+                 "pasm_instructions": sum(pasm_cogs.values()), "pasm_instructions_per_cog": pasm_cogs,
                  "wall_seconds": wall, "simulated_seconds": end / self.clock_hz if self.clock_hz else 0.0}
         stats["realtime_factor"] = stats["simulated_seconds"] / wall if wall > 0 else 0.0
         stats.update(self._ff_stats())
         stats["pll"] = [p._asdict() for p in self.counters.pll_outputs(end)]
         return RunResult(trace, bytes(self.mem[:HUB_SIZE]), end, reason, list(self.cog_events),
-                         list(self.warnings), stats)
+                         warnings, stats,
+                         list(self.warning_log.items) if self.warning_log is not None else [])
+
+    # ------------------------------------------------------------------ tools
+    def peek(self, hub_addr: int, size: int = 4) -> int:
+        """The byte, word or long (``size`` 1, 2, 4) of hub RAM at ``hub_addr`` (unsigned)."""
+        a = hub_addr & 0xFFFF
+        if size == 1:
+            return self.mem[a]
+        if size == 2:
+            return self.mem_words[a >> 1]
+        return self.mem_longs[a >> 2]
+
+    def poke(self, hub_addr: int, value: int, size: int = 4) -> None:
+        """Write hub RAM from outside the program, now (between bytecodes).
+
+        A parked busy loop that reads the long is brought up to the present
+        first, so the program sees the new value exactly from this cycle on.
+        """
+        a = hub_addr & 0xFFFF
+        if a >= HUB_SIZE:
+            raise ValueError(f"${a:04X} is not in hub RAM ($0000-$7FFF)")
+        for p in list(self._parked):
+            if any(((i << shift) & 0xFFFF) >> 2 == a >> 2 for shift, i, _ in p.busy.reads):
+                self._unpark(p, self.now)
+                self._cogs_changed = True
+        if size == 1:
+            self.mem[a] = value & 0xFF
+        elif size == 2:
+            self.mem_words[a >> 1] = value & 0xFFFF
+        else:
+            self.mem_longs[a >> 2] = value & 0xFFFFFFFF
+
+    def release_pin_wait(self, cog_id: int, t: Optional[int] = None) -> None:
+        """End cog ``cog_id``'s WAITPEQ/WAITPNE as if its condition had come true at cycle ``t`` (default ``now``)."""
+        c = self.cogs[cog_id]
+        if c.state != PIN_WAIT:
+            raise ValueError(f"cog {cog_id} is not waiting on pins")
+        after = c.pin_wait[3]
+        self._pin_waiters.remove(c)
+        c.pin_wait = None
+        c.state = RUNNING
+        c.t = (self.now if t is None else t) + after
+        self._cogs_changed = True
+
+    def pin_trace(self, until: Optional[int] = None):
+        """The :class:`~spinemu.trace.PinTrace` of the run so far (up to ``until``, default ``now``)."""
+        return self._build_trace(self.now if until is None else until)
 
     def _ff_stats(self) -> dict:
         return {"fast_forward": self.fast_forward, "busy_loops_learned": self._ff_loops,
@@ -394,3 +575,13 @@ class Chip(Pins, Listeners, Scheduler):
         t_first = 0
         self.start_spin_cog(cog0, 0x0004, t_first, None)
         self.cog_events[-1] = (t_first, 0, "start", f"Spin method at ${cog0.pc:04X} (boot)")
+
+
+def _default_log(debug_info, source_map):
+    """A WarningLog that places warnings with the debug info (file:line:col) or the source map."""
+    from ..runtime_warnings import WarningLog
+
+    if debug_info is not None:
+        return WarningLog(debug_info.position, debug_info.source_line)
+    return WarningLog(source_map)
+

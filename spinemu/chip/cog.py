@@ -14,14 +14,17 @@ DIRB, CTRA, CTRB, FRQA, FRQB, PHSA, PHSB, VCFG, VSCL).
 ``t`` is the cycle at which the cog starts its next bytecode.  ``hub_phase``
 is the value ``t mod 16`` takes when one of its hub instructions completes.
 
-The class is engine-neutral apart from the Spin fields, so a PASM engine can
-later run a cog through the same scheduler: ``engine`` names what runs it.
+The class is engine-neutral apart from the Spin fields: ``engine`` is what
+runs the cog (``"spin"`` for the bytecode interpreter, or an engine object
+with ``run``/``key``: the PASM engine of :mod:`.pasm_cog`, the Python engine
+of :mod:`spinemu.translate`).  A PASM cog keeps its cog RAM in ``ram``, its
+program counter in ``pc``, and the long it fetched next in ``ir``.
 """
 from __future__ import annotations
 
-__all__ = ["Cog", "STOPPED", "RUNNING", "PIN_WAIT", "PARKED", "IDLE_PASM"]
+__all__ = ["Cog", "STOPPED", "RUNNING", "PIN_WAIT", "PARKED"]
 
-STOPPED, RUNNING, PIN_WAIT, IDLE_PASM = "stopped", "running", "pin wait", "pasm (not emulated)"
+STOPPED, RUNNING, PIN_WAIT = "stopped", "running", "pin wait"
 #: running a learned busy loop, taken out of the schedule (see fastforward.py)
 PARKED = "parked"
 
@@ -38,10 +41,15 @@ class Cog:
         "vcfg", "vscl",
         # waiting on pins: (mask, state, equal, remaining cycles after the match)
         "pin_wait",
+        # PASM: cog RAM (+ flags and links, see pasm_cog.py), the prefetched long,
+        # the cycle of the next shared access, the hub address it was loaded from
+        "ram", "ir", "key", "code_addr",
         # statistics
-        "bytecodes",
+        "bytecodes", "instructions",
         # fast-forward: the learned busy loop, and when to try learning next
         "busy", "learn_mark", "learn_after", "park_t0",
+        # runtime checks: where the stack array cognew gave the cog ends (else the end of hub RAM)
+        "stack_end", "stack_info",
     )
 
     def __init__(self, cog_id: int):
@@ -51,11 +59,15 @@ class Cog:
         self.t = 0
         self.hub_phase = 8
         self.started_at = 0
-        self.bytecodes = 0
+        self.bytecodes = self.instructions = 0
+        self.ram = self.ir = None
+        self.key = self.code_addr = 0
         self.busy = None
         self.learn_mark = 0
         self.learn_after = 0
         self.park_t0 = 0
+        self.stack_end = 0x8000
+        self.stack_info = None
         self.reset_registers()
 
     def reset_registers(self) -> None:

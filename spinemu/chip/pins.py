@@ -57,11 +57,14 @@ class Pins:
         self._seq += 1
         self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, c.state != STOPPED))
         if self._pin_waiters:
-            self._wake_pin_waiters(t)
+            self._wake_pin_waiters(t, c)
             if self.counters.feedback_on:       # a feedback output follows its input one clock later
-                self._wake_pin_waiters(t + 1)
+                self._wake_pin_waiters(t + 1, c)
             if self._reactive_inputs:           # a bench part may answer later: the scheduler asks it again
                 self._request_preemption()
+        if self.pin_hooks:
+            for f in self.pin_hooks:
+                f(c, t)
 
     def wait_pins(self, c: Cog, mask: int, state: int, equal: bool, tf: int) -> int:
         issue, after = self.timing.waitpin[equal]
@@ -75,21 +78,23 @@ class Pins:
         self._ext_seen = max(self._ext_seen, t)
         raise Reschedule(_NEVER - tf)
 
-    def _wake_pin_waiters(self, t: int) -> None:
+    def _wake_pin_waiters(self, t: int, writer=None) -> None:
         """Resume the cogs whose WAITPEQ/WAITPNE condition holds at cycle ``t``.
 
-        Called from inside another cog's bytecode (a pin write), it also
-        preempts that cog's run loop, so the scheduler sees the woken cog.
+        Called from inside another cog's instruction (``writer``'s pin write),
+        it also preempts that cog's run loop, so the scheduler sees the woken
+        cog.  A Spin waiter resumes a fixed time after ``t``; a PASM waiter
+        (``after`` None) at its next poll (:meth:`PasmEngine.wake_time`).
         """
         woke = False
         for c in list(self._pin_waiters):
             mask, state, equal, after = c.pin_wait
             if ((self.ina(t) & mask) == state) == equal:
                 self._pin_waiters.remove(c)
+                c.t = t + after if after is not None else c.engine.wake_time(c, t, writer)
                 c.pin_wait = None
                 c.state = RUNNING
                 self._cogs_changed = True
-                c.t = t + after
                 woke = True
         if woke:
             self._request_preemption()

@@ -83,6 +83,8 @@ def build_handlers(chip, timing: Timing):
     sized_read = (mem.__getitem__,
                   lambda a: W[a >> 1],
                   lambda a: L[a >> 2])
+    checks = getattr(chip, "checks", None)      # runtime warnings (spinemu.chip.checks), or None
+    outside = checks.write_outside if checks is not None and checks.wants("write-outside-hub") else None
 
     def sized_write(size, a, v, c, t, op):
         a &= 0xFFFF
@@ -95,6 +97,8 @@ def build_handlers(chip, timing: Timing):
                 W[a >> 1] = v & 0xFFFF
             else:
                 L[a >> 2] = v & MASK32
+        elif outside is not None:
+            outside(c, a, 1 << size, t)
 
     def fetched(c, t):
         """The cycle the opcode fetch of a bytecode started at ``t`` completes."""
@@ -233,8 +237,10 @@ def build_handlers(chip, timing: Timing):
         c.dbase = frame6 + 2
         ent = L[((c.pbase + 4 * m) & 0xFFFF) >> 2]
         sp = c.sp + (ent >> 16)
-        if sp > 0x8000:
-            raise chip.fault(c, c.pc - 2, f"stack overflow: the call needs the stack up to ${sp:04X}, past the end of hub RAM")
+        if sp > c.stack_end:
+            if sp > 0x8000:
+                raise chip.fault(c, c.pc - 2, f"stack overflow: the call needs the stack up to ${sp:04X}, past the end of hub RAM")
+            chip.checks.stack_past_array(c, sp, c.pc - 1, (c.pbase + ent) & 0xFFFF)
         c.sp = sp
         full = (c.pbase_hi << 16 | c.pbase) + ent
         c.pc = full & 0xFFFF
@@ -489,6 +495,16 @@ def build_handlers(chip, timing: Timing):
         wait = (target - issue - T.waitcnt_min) & MASK32
         return T.waitcnt_issue + T.waitcnt_min + wait + T.waitcnt_after
 
+    if checks is not None and checks.wants("waitcnt-passed"):
+        def op_waitcnt(c, op, t):               # the same, with the runtime check for a count already passed
+            tf = fetched(c, t)
+            target = pop(c)
+            issue = tf + T.waitcnt_issue
+            wait = (target - issue - T.waitcnt_min) & MASK32
+            if wait & 0x80000000:
+                checks.waitcnt(c, target, wait, tf)
+            return T.waitcnt_issue + T.waitcnt_min + wait + T.waitcnt_after
+
     def op_push_spr(c, op, t):
         tf = fetched(c, t)
         r = 0x1F0 + (pop(c) & 0xF)
@@ -672,6 +688,8 @@ def build_handlers(chip, timing: Timing):
                     if WATCH[a >> 2]:
                         chip.watch_hit(c, a, t, op)
                     L[a >> 2] = L[sp >> 2]
+                elif outside is not None:
+                    outside(c, a, 4, t)
                 return rest
         elif access == 3:
             def h(c, op, t):
@@ -692,6 +710,8 @@ def build_handlers(chip, timing: Timing):
                     if WATCH[a >> 2]:
                         chip.watch_hit(c, a, t, op)
                     L[a >> 2] = new & MASK32
+                elif outside is not None:
+                    outside(c, a, 4, t)
                 return using_rest + arest
         h.__name__ = "op_var_long"
         return h

@@ -39,6 +39,8 @@ class MethodInfo:
     locals_size: int
     nparams: int
     pos: object
+    #: ``(name, frame offset, longs, "result" | "param" | "local")``, result first (debug info)
+    slots: list = field(default_factory=list)
 
 
 @dataclass
@@ -64,6 +66,16 @@ class CompiledObject:
     def child_table(self) -> int:
         """Offset of the first child entry in the table."""
         return 4 * (1 + self.n_methods)
+
+
+def _frame_slots(method, frame: dict) -> list:
+    """The named longs of ``method``'s frame (see MethodInfo.slots)."""
+    slots = [(method.result or "result", 0, 1, "result")]
+    first_local = 4 + 4 * len(method.params)
+    for sym in sorted(frame.values(), key=lambda s: s.offset):
+        if sym.offset:
+            slots.append((sym.name, sym.offset, sym.count, "param" if sym.offset < first_local else "local"))
+    return slots
 
 
 class ObjectCompiler:
@@ -198,7 +210,7 @@ class ObjectCompiler:
                     self.error(msg.JUMP_TOO_FAR, sym.node)
                     mspans, end = [], offset
             infos.append(MethodInfo(sym.name, sym.index, sym.public, offset, end, mc.locals_size,
-                                    sym.nparams, sym.node.pos))
+                                    sym.nparams, sym.node.pos, _frame_slots(sym.node, mc.frame)))
             for s in mspans:
                 code_bytes += s.data
             spans.extend(mspans)

@@ -20,6 +20,7 @@ from ..diagnostics import CompileError, Diagnostic, ParseError
 from .. import messages as msg
 from .ast import ConEnumName, ConEnumStart, NameRef, ObjConst, SpinFile, key
 from .constants import Const, ConstError, NotConstant, evaluate
+from .obj_shadow import shadowed_object_hints
 from .parser import parse_text
 from .source import read_source
 
@@ -46,6 +47,7 @@ class ObjectUnit:
     children: list = field(default_factory=list)   # [(ObjDecl, ObjectUnit)]
     constants: ConstantTable = field(default_factory=ConstantTable)
     child_by_name: dict = field(default_factory=dict)
+    hints: list = field(default_factory=list)       # Diagnostics about its OBJ lines (obj_shadow.py)
 
     @property
     def name(self) -> str:
@@ -97,6 +99,7 @@ class _Loader:
             if os.path.realpath(child_path) in self.stack:
                 self._error(msg.OBJECT_RECURSION.format(name=decl.filename), decl, spin)
                 continue
+            unit.hints.extend(shadowed_object_hints(decl, child_path, here, self.include_dirs, spin.source))
             child = self.load(child_path)
             if child is not None:
                 unit.children.append((decl, child))

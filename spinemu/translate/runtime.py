@@ -356,6 +356,8 @@ class PythonChip(Chip):
             method, args = self.next_python
             self.next_python = None
             name = method.__qualname__
+        elif by is not None:        # a PASM cog's COGINIT of the interpreter: its frame is in hub
+            return                  # RAM, so the bytecode interpreter runs that cog
         else:                                           # the boot: the top object's first method
             method, args = _first_method(self.top), ()
             name = getattr(method, "__qualname__", None) or method.func.__qualname__

@@ -74,3 +74,22 @@ def make_image(code: bytes, *, var_longs: int = 8, locals_bytes: int = 0, clkfre
     img = bytearray(header + obj)
     img[5] = image_checksum(bytes(img))
     return bytes(img)
+
+
+def pasm_mismatches(recorded, ours) -> list:
+    """Where our PASM instructions differ from spinsim's recorded ones, one line each.
+
+    ``recorded``: ``[first cycle, address, long, executed, value or None, Z or None,
+    C or None]`` per instruction (``None``: spinsim's log does not show it);
+    ``ours``: the :class:`spinemu.chip.pasm_cog.PasmStep` records of the same cog.
+    """
+    bad = []
+    for k, want in enumerate(recorded):
+        if k >= len(ours):
+            bad.append(f"step {k}: spinsim ran {want}, spinemu ran no more")
+            break
+        s = ours[k]
+        got = [s.cycle, s.pc, s.word, s.executed, s.result, s.z, s.c]
+        if any(w is not None and w != g for w, g in zip(want, got)):
+            bad.append(f"step {k}: spinsim {want}, spinemu {got} ({s.text().strip()})")
+    return bad

@@ -90,12 +90,16 @@ def test_a_callable_stimulus_is_polled():
     assert 500_000 < result.trace.changes[1][0] < 502_000
 
 
-def test_pasm_cog_start_is_reported_and_the_cog_stays_idle():
-    result = Chip(image("pasm_cog")).run(max_cycles=2_000_000)
-    assert result.warnings and "PASM is not emulated" in result.warnings[0]
-    assert "cog 1" in result.warnings[0] and "$00" in result.warnings[0]
-    assert result.trace.changes == [(0, 0, 0)]          # its `mov dira, #1` never runs
-    assert any(e[1] == 1 and e[2] == "start" and "PASM" in e[3] for e in result.cog_events)
+def test_a_pasm_cog_started_from_spin_runs_and_is_reported():
+    result = Chip(image("pasm_cog")).run()
+    assert not result.warnings and result.reason == "all cogs stopped"
+    # its `mov dira, #1` makes P0 an output (the first instruction after the start),
+    # then it waits 100_000 cycles and stops: P0 floats
+    (t0, d0, o0), (t1, d1, o1) = result.trace.changes[1:3]
+    assert (t0, d0, o0, d1, o1) == (908, 1, 0, 0, 0) and 100_000 < t1 - t0 < 100_100
+    start = [e for e in result.cog_events if e[1] == 1 and e[2] == "start"]
+    assert start and "PASM at $00" in start[0][3]
+    assert result.stats["pasm_instructions_per_cog"] == {1: 6}
 
 
 def test_an_eeprom_image_runs_like_the_binary():

@@ -90,3 +90,93 @@ def cog_starts(events) -> int:
 
 def spinsim_available(path: str) -> bool:
     return os.path.exists(path)
+
+
+# ----------------------------------------------------------------------------- PASM cogs
+ZVAL = re.compile(r"Z=(\d)")
+CVAL = re.compile(r"C=(\d)")
+_WAITPIN = (0x3C, 0x3D)
+
+
+def pasm_steps(events) -> list:
+    """One record per executed PASM instruction of one cog's log lines.
+
+    ``(start cycle, cog address, long, executed, result or None, Z or None,
+    C or None)``.  spinsim logs an instruction when it completes, after one
+    ``W`` line per 4 cycles it waited (hub window, WAITCNT) and, for
+    WAITPEQ/WAITPNE, one plain line per poll; ``X`` marks a false condition,
+    ``I`` the pipeline's empty slot (a not-taken jump, a cog start).
+    """
+    out = []
+    start = None
+    for cyc, addr, ins, flag, text in events:
+        if flag == "I":
+            start = None
+            continue
+        if start is None:
+            start = cyc
+        if flag == "W":
+            continue
+        word = int(ins, 16)
+        r, z, c = RVAL.search(text), ZVAL.search(text), CVAL.search(text)
+        rec = [start, addr, word, flag != "X", int(r.group(1), 16) if r else None,
+               int(z.group(1)) if z else None, int(c.group(1)) if c else None]
+        start = None
+        last = out[-1] if out else None
+        # a WAITPEQ/WAITPNE logs every poll (plain lines; the last one shows the flags):
+        # one instruction from its first poll
+        if (last is not None and word >> 26 in _WAITPIN and last[1] == addr and last[2] == word
+                and last[4] is None and last[5] is None and last[6] is None and cyc - last[-1] == 4):
+            last[4:8] = rec[4:7] + [cyc]
+            continue
+        out.append(rec + [cyc])
+    return [rec[:7] for rec in out]
+
+
+def pin_trace(cogs: dict) -> list:
+    """``[(cycle, dir, out), ...]`` of all cogs from their logs, as the reference traces count.
+
+    An OUTA/DIRA write shows at its instruction's cycle + 4; a cog stopped by
+    a COGSTOP (its target read from the value last written to the COGSTOP's
+    destination register) floats its pins at the COGSTOP's cycle + 4; a
+    stopped cog started again drives its old DIRA/OUTA again from its first
+    slot (spinsim does not clear them).
+    """
+    events = []
+    for k, lines in cogs.items():
+        regs: dict = {}
+        for cyc, addr, ins, flag, text in lines:
+            if flag == "I" and addr == 0 and ins == "00000000":
+                events.append((cyc, 2, k, "start", 0))
+            if flag != " ":
+                continue
+            word = int(ins, 16)
+            dest = (word >> 9) & 0x1FF
+            r = RVAL.search(text)
+            if r and word & (1 << 23):
+                regs[dest] = int(r.group(1), 16)
+                if dest in (0x1F4, 0x1F6):
+                    events.append((cyc + 4, 1, k, dest, regs[dest]))
+            if word >> 26 == 3 and word & (1 << 22) and word & 7 == 3 and dest in regs:
+                events.append((cyc + 4, 0, regs[dest] & 7, None, 0))
+    events.sort()
+    drive: dict = {}
+    stopped: dict = {}
+    out = [(0, 0, 0)]
+    for t, _, k, dest, value in events:
+        if dest is None:
+            if k in drive:
+                stopped[k] = drive.pop(k)
+        elif dest == "start":
+            if k in stopped:
+                drive[k] = stopped.pop(k)
+        else:
+            d = drive.setdefault(k, [0, 0])
+            d[0 if dest == 0x1F6 else 1] = value
+        dirs = outs = 0
+        for dd, oo in drive.values():
+            dirs |= dd
+            outs |= dd & oo
+        if (dirs, outs) != out[-1][1:]:
+            out.append((t, dirs, outs))
+    return out
