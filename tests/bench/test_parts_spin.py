@@ -198,6 +198,38 @@ def test_the_column_demo_as_printed_steps_88_per_revolution_and_not_in_free_run(
     assert "steps per run: +88 -88 +88 -88" in stepper.summary()
 
 
+STEP_JUMP = """CON
+  _clkmode = xtal1 + pll16x
+  _xinfreq = 5_000_000
+PUB main | t
+  dira[0..1]~~
+  outa[1]~~                     ' forward
+  t := cnt
+  repeat 10                     ' 10 steps at 100 steps/s...
+    pulse
+    waitcnt(t += clkfreq / 100)
+  repeat 20                     ' ... then 20 at 2000 steps/s: too fast a jump for this motor
+    pulse
+    waitcnt(t += clkfreq / 2000)
+PRI pulse
+  outa[0]~~
+  waitcnt(cnt + 2_000)
+  outa[0]~
+"""
+
+
+def test_a_stepper_on_a_step_dir_driver_misses_the_steps_past_its_pull_in_rate(tmp_path):
+    src = tmp_path / "jump.spin"
+    src.write_text(STEP_JUMP)
+    stepper = Stepper(step=0, dir=1, pull_in=500)
+    spinemu.run_spin(src, parts=[stepper], seconds=0.2)
+    assert len(stepper.motion.steps) == 30
+    # the 11th step still comes 10 ms after the 10th; from the 12th on the rate jumps to 2000/s
+    assert stepper.motion.position == 11 and len(stepper.motion.missed) == 19
+    assert "shaft at +11 steps, 19 steps missed (the first at 0.100" in stepper.summary()
+    assert sum(stepper.runs()) == 30
+
+
 def test_parts_leave_the_column_demo_trace_unchanged():
     ref = spinemu.run_spin(ROOT / "spin_src" / "corrected" / "stepper_demo.spin", seconds=2.0)
     bench = Bench([Stepper(coils=[1, 2, 3, 4], enable=0), Led(pin=0)])

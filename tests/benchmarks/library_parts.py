@@ -189,7 +189,8 @@ def case_boebot_servo(lib, tmp):
     folder = os.path.join(lib, "Spin Stamp Code for the Boe-Bot")
     servo = Servo(pin=12, pulse_range=(1.0e-3, 2.0e-3))
     result = spinemu.run_spin(os.path.join(folder, "CenterServoP12.spin"), parts=[servo], seconds=0.5)
-    return len(servo.pulses) > 10 and servo.angle == 90.0, f"{servo.summary()} ({result.reason})"
+    widths = {round(p.width / result.trace.clock_hz * 1e3, 2) for p in servo.pulses}
+    return len(servo.pulses) > 10 and widths == {1.52}, f"{servo.summary()} ({result.reason})"
 
 
 def case_servo32(lib, tmp):
