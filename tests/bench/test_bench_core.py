@@ -230,3 +230,49 @@ def test_the_boot_eeprom_holds_a_count_that_the_var_area_restores():
     eeprom = I2cEeprom(data=prog.eeprom())
     spinemu.run_spin(prog.eeprom(), parts=[eeprom], seconds=0.05)
     assert struct.unpack_from("<i", eeprom.memory, vbase)[0] == 1
+
+
+PASM_RC = """CON
+  _clkmode = xtal1 + pll16x
+  _xinfreq = 5_000_000
+VAR
+  long measured
+PUB main
+  cognew(@measure, @measured)
+  repeat until measured
+DAT
+        org 0
+measure or      outa, mask              ' charge the capacitor: drive P5 high for 1 ms
+        or      dira, mask
+        mov     t0, cnt
+        add     t0, ms
+        waitcnt t0, #0
+        andn    dira, mask              ' let go...
+        mov     t0, cnt
+        waitpne mask, mask              ' ... and wait for the pin to fall
+        mov     t1, cnt
+        sub     t1, t0
+        wrlong  t1, par
+        cogid   t0
+        cogstop t0
+mask    long    |< 5
+ms      long    80_000
+t0      res     1
+t1      res     1
+"""
+
+
+def test_a_pasm_cog_waiting_on_an_rc_part_wakes_when_the_voltage_crosses(tmp_path):
+    import math
+    from spinemu.bench import RcCircuit
+    src = tmp_path / "pasm_rc.spin"
+    src.write_text(PASM_RC)
+    prog = compile_file(str(src))
+    rc = RcCircuit(pin=5, r=10e3, c=0.1e-6)
+    result = spinemu.run_spin(prog.binary, parts=[rc], seconds=0.01)
+    vbase = struct.unpack_from("<H", prog.binary, 8)[0]
+    measured = struct.unpack_from("<i", result.hub, vbase)[0]
+    decay = 10e3 * 0.1e-6 * math.log(3.3 * 10e3 / 10.22e3 / 1.65) * 80e6
+    (release, crossing), = rc.decays
+    assert crossing - release == math.floor(decay) + 1
+    assert 0 <= measured - (crossing - release) <= 16            # the MOV after the release, the wake-up
