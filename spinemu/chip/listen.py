@@ -28,9 +28,10 @@ cycle limit or in a deadlock.  The last call, at the end of the run, has
 ``upto`` one past the last cycle, or ``1 << 62`` when nothing can change the
 pins any more (every cog stopped, a deadlock); then a listener object with a
 ``run_ended`` method is told the run's last cycle.  When the scheduler jumps
-over time (every cog in WAITCNT, a pin wait for a far edge), the listeners
-still get a call every ``listen_interval`` cycles of it (a live view keeps
-moving), each with the pins up to that cycle.  Without listeners none of
+over more than two intervals (every cog in WAITCNT, a pin wait for a far
+edge), the listeners still get a call every ``listen_interval`` cycles of it
+(a live view keeps moving), each with the pins up to that cycle; shorter
+jumps get one call, as before.  Without listeners none of
 this runs.
 
 Each call folds only what is new since the previous one (the pin events
@@ -100,10 +101,11 @@ class Listeners:
         # a listener may make an input change at present, which can wake a waiting cog there
         upto = min(h, present)
         step = self.listen_interval
-        t = self._listened_to + step
-        while t < upto:                 # time jumped (WAITCNT, a far pin edge): keep the interval
-            self._deliver_pins(t, present)
-            t += step
+        if upto - self._listened_to > 2 * step:     # time jumped (WAITCNT, a far pin edge): keep the interval
+            t = self._listened_to + step
+            while t < upto:
+                self._deliver_pins(t, present)
+                t += step
         self._deliver_pins(upto, present)
 
     def _run_ended(self, end: int) -> None:
