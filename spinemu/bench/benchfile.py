@@ -70,6 +70,7 @@ M_REFUSED = "{0}: {1}"
 M_USER_CLASS = "cannot load the part class '{0}': {1}"
 M_NOT_A_PART = "'{0}' is not a part (a subclass of spinemu.bench.Part)"
 M_FILE = "{0}: cannot read '{1}': {2}"
+M_DEFAULT_PIN = "{0}: P{1} does not exist on {2} (pins are 0..{3}): give this part its pins"
 
 
 class _Lines:
@@ -173,6 +174,9 @@ def read_bench(text: str, path: str = "<bench>", *, pin_count: int = 32, engine:
                          head)
             raise _error(path, lines, M_REFUSED.format(cls.kind, e), where) from None
         part.origin = (path, keys, head)
+        for pin in sorted(set(part.driven_pins()) | set(part.watched_pins())):
+            if not 0 <= pin < pin_count:                # a default pin (an EEPROM's P28/P29)
+                raise _error(path, lines, M_DEFAULT_PIN.format(part.name, pin, engine, pin_count - 1), head)
         try:
             bench.add(part)
         except BenchPinError as e:

@@ -60,6 +60,11 @@ def test_a_pin_the_engine_does_not_have_is_reported_at_its_value(text, pins, lin
     assert e.line == line and what in e.message
 
 
+def test_a_default_pin_the_engine_lacks_is_reported_at_the_part():
+    e = error('[[part]]\ntype = "eeprom"\n', pin_count=16, engine="the BASIC Stamp")
+    assert e.line == 1 and "EEPROM 24LC256 P28/P29: P28 does not exist on the BASIC Stamp" in e.message
+
+
 def test_two_parts_driving_one_pin_are_reported_at_the_second():
     e = error('[[part]]\ntype = "button"\npin = 28\n\n[[part]]\ntype = "eeprom"\nchip = "24LC512"\n'
               'scl = 28\nsda = 29\n')
