@@ -16,9 +16,9 @@ with parts on the bench, and the parts' view of the run is checked:
   R/W) and ``Serial_Lcd`` (a Parallax serial LCD through ``Simple_Serial``,
   which it names in lower case: a link with that name stands in for the file
   on a case-sensitive file system);
-* servos: the Boe-Bot book's ``CenterServoP12`` and ``Servo32v9`` run their
-  servo code in a PASM cog or print through one: they work where PASM cogs
-  are emulated, and are reported as such here otherwise.
+* servos: ``Servo32v9`` (its pulses come from a PASM cog) and the Boe-Bot
+  book's ``CenterServoP12`` (Spin pulses; it prints through a PASM serial
+  cog); a build without PASM cogs reports them as needing them.
 
 Prints one line per program: what the parts saw, and PASS or FAIL.  Exit
 status 1 if a program that should work does not.
