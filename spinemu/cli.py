@@ -19,7 +19,8 @@ import time
 from typing import Optional, Sequence, TextIO
 
 from . import __version__
-from .cli_console import ConsoleSession, add_decode_parser, console_options, console_wanted, decode_uart_command
+from .cli_bench import RunBench, add_decode_parser, bench_options, chip_input_model, decode_command
+from .cli_console import ConsoleSession, console_options, console_wanted
 from .cli_tools import (_add_debug_parser, _add_profile_parser, _attach_profiler, _print_hints,
                         _runtime_warning_log, _runtime_warning_rows, _warning_options)
 from .diagnostics import SpinError, UsageError
@@ -43,6 +44,9 @@ examples:
   spinemu trace steps demo.log --pins 1..4               stepper decoder (coils)
   spinemu trace steps accel.log --step-dir 0,1 --plot m.png   step/dir driver, motion plot
   spinemu trace decode uart run.log --pin 30 --baud 9600  serial text on a pin
+  spinemu run spin_src/stepper_demo.spin --bench spin_src/stepper_demo.bench.toml
+                                                         parts on the pins: the motor's steps per run
+  spinemu trace decode i2c run.log --pins 28,29          I2C transfers (addresses, data, ACK/NAK)
   spinemu disasm demo.binary                             listing of an image
 """
 
@@ -188,36 +192,9 @@ def _progress_callback(out: _Out, total: Optional[int], clock_hz: int, enabled: 
     return progress, update
 
 
-def _parse_stimulus(spec: Optional[str], pin_count: int) -> dict:
-    """``{pin: level}`` or ``{pin: [(seconds, level), ...]}`` from ``--input``."""
-    if not spec:
-        return {}
-    from .pbasic.stimulus import parse_input_spec
-
-    try:
-        parsed = parse_input_spec(spec)
-    except ValueError:
-        raise UsageError(f"--input: cannot read {spec!r}; expected e.g. 'P3=1' or 'P5=0@0,1@0.25'")
-    bad = [p for p in parsed if not 0 <= p < pin_count]
-    if bad:
-        raise UsageError(f"--input: pin {bad[0]} does not exist (pins are 0..{pin_count - 1})")
-    return parsed
-
-
 def _spin_inputs(args, clock_hz: int):
-    """The chip's input model: the pull mode, plus any --input waveforms on top."""
-    stim = _parse_stimulus(args.stimulus, 32)
-    if not stim:
-        return args.inputs              # None: the compat mode's own default
-    from .chip.inputs import PinStimulus
-
-    pull = args.inputs or ("pullup" if _compat(args) == "spinsim" else "pulldown")
-    base = 0xFFFFFFFF if pull == "pullup" else 0
-    changes = []
-    for pin, value in stim.items():
-        for seconds, level in ([(0.0, value)] if isinstance(value, int) else value):
-            changes.append((int(round(seconds * clock_hz)), 1 << pin, level << pin))
-    return PinStimulus(changes, initial=base)
+    """The chip's input model for ``--inputs``/``--input`` (the profiler's runs; ``run`` has a bench)."""
+    return chip_input_model(args, clock_hz, _compat(args))
 
 
 def _compat(args) -> str:
@@ -269,14 +246,17 @@ def cmd_run(args, out: _Out) -> int:
         raise UsageError("--console-in-at needs --console-in FILE (the bytes to send)")
     image, source_map, prog = _load_target(args.target, args.include, args.define)
     _print_hints(out, prog)
-    from .image import ImageHeader
+    from .image import ImageHeader, to_eeprom
 
     clock = ImageHeader.parse(image).clkfreq or CLOCK_DEFAULT
     limit = _run_limit(args, clock)
-    session = ConsoleSession(args, out, clock) if console_wanted(args) else None
-    parts = [session.console] if session else []
+    session = ConsoleSession(args, out, clock, live_text=not args.view) if console_wanted(args) else None
+    raw = _read_bytes(args.target) if kind == "image" else None
+    eeprom = raw if raw is not None and len(raw) == 32768 else to_eeprom(image)
+    bench = RunBench(args, out, clock_hz=clock, pin_count=32, engine="the Propeller", eeprom_image=eeprom,
+                     session=session)
     t0 = time.perf_counter()
-    with session or contextlib.nullcontext():
+    with session or contextlib.nullcontext(), bench.run_context():
         if args.engine == "python":
             if kind != "spin":
                 raise UsageError("--engine python needs a .spin source (it translates the source)")
@@ -285,33 +265,35 @@ def cmd_run(args, out: _Out) -> int:
             from .translate import run_translated
 
             result = run_translated(args.target, include_dirs=list(args.include or ()), max_cycles=limit,
-                                    compat=_compat(args), inputs=_spin_inputs(args, clock), parts=parts)
+                                    compat=_compat(args), inputs=bench.chip_inputs(_compat(args)),
+                                    parts=bench.bench if bench.active else ())
         else:
             from .chip import Chip
 
             log = _runtime_warning_log(args, out, prog)
-            chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map,
+            chip = Chip(eeprom if raw is not None and len(raw) == 32768 else image, compat=_compat(args),
+                        inputs=bench.chip_inputs(_compat(args)), source_map=source_map,
                         labels=prog.dat_labels() if prog is not None else None,
                         warn=log if log is not None else False,
                         debug_info=prog.debug_info() if prog is not None else None)
             profiler = _attach_profiler(chip, prog) if args.profile else None
-            for part in parts:
-                part.attach(chip)
+            bench.attach(chip)
             with _pasm_trace_sink(args, out, chip, prog) as sink:
                 for cog_id in args.trace_cog or ():
                     chip.trace_cog(cog_id, sink)
-                progress, update = _progress_callback(out, limit, clock, not args.no_progress and not
-                                                      (session and session.shows))
+                progress, update = _progress_callback(out, limit, clock, not args.no_progress and not args.view
+                                                      and not (session and session.shows))
                 if progress is not None:
                     with progress:
                         result = chip.run(max_cycles=limit, progress=update)
                 else:
                     result = chip.run(max_cycles=limit)
     wall = time.perf_counter() - t0
-    _write_trace(args, result.trace)
+    _write_trace(args, bench.trace(result.trace))
+    bench.finish()
     if args.dump_hub:
         _write_atomic(args.dump_hub, bytes(result.hub), True)
-    for w in result.warnings + (session.warnings(result.end_cycle) if session else []):
+    for w in result.warnings + (session.warnings(result.end_cycle) if session else []) + bench.warnings():
         out.err_console.print(f"warning: {w}", markup=False)
     if not out.quiet:
         started = sum(1 for e in result.cog_events if e[2] == "start")
@@ -328,6 +310,7 @@ def cmd_run(args, out: _Out) -> int:
             rows.append(("trace", f"{args.trace} ({len(result.trace.changes)} changes)"))
         if session:
             rows.append(session.summary())
+        rows += bench.rows()
         if result.stats.get("pll"):
             rows.append(("PLL", _pll_summary(result.stats["pll"])))
         rows.extend(_runtime_warning_rows(getattr(result, "runtime_warnings", [])))
@@ -407,31 +390,38 @@ _PBASIC_REASONS = {"end": "END statement", "stop": "STOP statement", "time": "ti
 
 
 def _run_pbasic(args, out: _Out) -> int:
-    from .pbasic import run_file
+    from .pbasic import CLOCK_HZ, run_file
 
     if args.engine == "python" or args.compat is not None or args.inputs is not None:
         raise UsageError("--engine, --compat and --inputs apply to Spin programs only")
-    if console_wanted(args) or args.console_in_at is not None:
-        raise UsageError("the serial console (--console, --console-out, --console-in, --console-pins, --baud) "
-                         "applies to Propeller programs; a BASIC Stamp program's DEBUG text is printed and "
-                         "--debug-in feeds DEBUGIN")
+    if args.console_in_at is not None and not args.console_in:
+        raise UsageError("--console-in-at needs --console-in FILE (the bytes to send)")
     if args.cycles is not None:
         raise UsageError("BASIC Stamp runs are limited with --seconds (the BS2 has no system counter)")
     if not os.path.exists(args.target):
         raise SpinError("no such file", path=args.target)
     seconds = args.seconds if args.seconds is not None else 10.0
+    session = None
+    if console_wanted(args):
+        if not args.console_pins:
+            raise UsageError("the serial console on a BASIC Stamp program needs --console-pins TX,RX (pins "
+                             "0..15, the SEROUT and SERIN pins; its DEBUG text is printed anyway)")
+        session = ConsoleSession(args, out, CLOCK_HZ, live_text=not args.view)
+    bench = RunBench(args, out, clock_hz=CLOCK_HZ, pin_count=16, engine="the BASIC Stamp", session=session)
     t0 = time.perf_counter()
-    inputs = _parse_stimulus(args.stimulus, 16) or None
-    result = run_file(args.target, seconds=seconds, timing=args.timing or "exact", inputs=inputs,
-                      debug_in=args.debug_in)
+    with session or contextlib.nullcontext(), bench.run_context():
+        result = run_file(args.target, seconds=seconds, timing=args.timing or "exact", inputs=bench.spec or None,
+                          debug_in=args.debug_in, parts=bench.bench if bench.active else ())
     wall = time.perf_counter() - t0
     if result.debug_output:
         out.stdout.write(result.debug_output)
         if not result.debug_output.endswith("\n"):
             out.stdout.write("\n")
-    _write_trace(args, result.trace)
+    _write_trace(args, bench.trace(result.trace))
     for w in result.warnings:
         out.err_console.print(w.render() if hasattr(w, "render") else f"warning: {w}", markup=False)
+    for w in (session.warnings(result.end_cycle) if session else []) + bench.warnings():
+        out.err_console.print(f"warning: {w}", markup=False)
     if not out.quiet:
         trace = result.trace
         end = trace.end_cycle
@@ -440,6 +430,9 @@ def _run_pbasic(args, out: _Out) -> int:
                 ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
         if args.trace:
             rows.append(("trace", f"{args.trace} ({len(trace.changes)} changes)"))
+        if session:
+            rows.append(session.summary())
+        rows += bench.rows()
         out.print(_summary_table(trace, end, rows))
     return 0
 
@@ -535,7 +528,7 @@ def cmd_trace(args, out: _Out) -> int:
     if action == "steps":
         return _trace_steps(args, trace, start, end, out)
     if action == "decode":
-        return decode_uart_command(args, trace, out)
+        return decode_command(args, trace, out)
     raise UsageError(f"unknown trace action {action!r}")
 
 
@@ -650,14 +643,15 @@ def build_parser() -> argparse.ArgumentParser:
                    help="what pins nobody drives read as (default: pullup with --compat spinsim, as the "
                         "reference reads them; pulldown with --compat chip)")
     r.add_argument("--input", dest="stimulus", metavar="SPEC",
-                   help="drive input pins: 'P3=1' holds P3 high; 'P5=0@0,1@0.25' sets P5 low at 0 s and high at "
-                        "0.25 s; several pins separated by ';'")
+                   help="drive input pins (any program): 'P3=1' holds P3 high; 'P5=0@0,1@0.25' sets P5 low at 0 s "
+                        "and high at 0.25 s; several pins separated by ';'")
     r.add_argument("--debug-in", metavar="TEXT", default="", help="BASIC Stamp only: characters DEBUGIN/SERIN will read")
     r.add_argument("--engine", choices=["bytecode", "python"], default="bytecode",
                    help="bytecode: interpret the compiled image (default); python: run the Spin-to-Python translation")
     r.add_argument("--timing", choices=["exact", "realistic"],
                    help="BASIC Stamp only: exact command durations, or with per-instruction interpreter time")
     console_options(r)
+    bench_options(r)
     r.add_argument("--trace-cog", type=int, action="append", choices=range(8), metavar="N",
                    help="log every PASM instruction cog N executes: cycle, address, disassembly, flags after it "
                         "and the value written (repeatable; bytecode engine only)")

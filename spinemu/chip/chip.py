@@ -36,6 +36,7 @@ from dataclasses import dataclass, field
 from typing import Callable, Optional
 
 from ..diagnostics import EmulationError
+from ..bench.inputs import make_input_model
 from ..image import BOOT_FRAME, HUB_SIZE, ImageHeader, load_image
 from ..trace import PinTrace
 from .blocks import HOT as BLOCK_THRESHOLD
@@ -106,7 +107,8 @@ class Chip(Pins, Listeners, Scheduler):
     """A Propeller 1 running one image.
 
     Args:
-        image: the bytes of a ``.binary`` or ``.eeprom`` image.
+        image: the bytes of a ``.binary`` or ``.eeprom`` image (a 32 KB
+            EEPROM image is loaded whole, as the boot loader does).
         compat: ``"spinsim"`` (default) or ``"chip"`` (see the module docstring).
         inputs: what pins nobody drives read: ``"pullup"``, ``"pulldown"``, or
             a stimulus (see :mod:`spinemu.chip.inputs`).  Default: pull-down
@@ -129,7 +131,13 @@ class Chip(Pins, Listeners, Scheduler):
     Raises:
         ImageError: if ``image`` is not a valid Propeller image.
 
+    Bench parts (:mod:`spinemu.bench`) attach through ``clock_hz``,
+    ``pin_count``, ``inputs``, :attr:`drive_history` and
+    ``add_pin_listener``.
     """
+
+    #: pins of the P8X32A (port A)
+    pin_count = 32
 
     def __init__(self, image: bytes, *, compat: str = "spinsim", inputs=None,
                  source_map: Optional[Callable] = None, fast_forward: bool = True,
@@ -146,12 +154,13 @@ class Chip(Pins, Listeners, Scheduler):
         self.fast_forward = fast_forward
         self.compile_blocks = compile_blocks
         self.timing = timing or load_timing()
-        from .inputs import make_input_model
         self.inputs = make_input_model(inputs, pull_up=self.spinsim)
 
         self.mem = bytearray(0x10000)
         self.mem[0x8000:] = build_rom()
-        self.mem[: len(binary)] = binary
+        # the boot loader copies all 32 KB of an EEPROM (data a program stored there included)
+        boot = bytes(image) if len(image) == HUB_SIZE else binary
+        self.mem[: len(boot)] = boot
         frame = BOOT_FRAME.to_bytes(4, "little") * 2
         self.mem[self.header.dbase - 8: self.header.dbase] = frame
         view = memoryview(self.mem)
@@ -203,6 +212,7 @@ class Chip(Pins, Listeners, Scheduler):
         self.pin_events: list = []          # (cycle, seq, cog, dira, outa, running)
         self.pin_fold = PinFold(self)       # pin events and counter outputs folded into pin states (pinfold.py)
         self._init_listeners()              # live pin listeners (listen.py)
+        self._drives = None                 # the drive history bench parts read (drives.py), on first use
         self.cog_events: list = []
         self.warnings: list = []
         self._seq = 0
@@ -243,6 +253,14 @@ class Chip(Pins, Listeners, Scheduler):
         self.handlers[op] = handler
         self._handlers[op] = handler
 
+
+    @property
+    def drive_history(self):
+        """What the cogs drove on the pins, for bench parts (:class:`spinemu.chip.drives.ChipDrives`)."""
+        if self._drives is None:
+            from .drives import ChipDrives
+            self._drives = ChipDrives(self)
+        return self._drives
 
     # ------------------------------------------------------------------ faults
     def fault(self, c: Cog, hub_addr: int, message: str) -> EmulationError:
@@ -476,6 +494,7 @@ class Chip(Pins, Listeners, Scheduler):
         if self.pin_listeners:      # pins nothing can change any more stay as they are for ever
             self._listen_end = end + 1
             self._deliver_pins(_NEVER if reason in _FINAL_REASONS else end + 1, end + 1)
+            self._run_ended(end)
         trace = self._build_trace(end)
         warnings = list(self.warnings) + list(self.counters.end_warnings(end))
         per_cog = {c.id: c.bytecodes for c in self.cogs if c.bytecodes}
@@ -546,6 +565,7 @@ class Chip(Pins, Listeners, Scheduler):
         self._booted = True
         self._ext_seen = 0
         self._pin_waiters = []
+        self._reactive_inputs = bool(getattr(self.inputs, "reactive", False))
         self._video_ready = [0] * 8
         cog0 = self.cogs[0]
         # The boot loader starts the interpreter in cog 0 with PAR = $0004

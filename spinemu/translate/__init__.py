@@ -93,8 +93,8 @@ def run_translated(src_path, include_dirs=(), max_cycles=None, compat: str = "sp
         include_dirs: more folders to look for OBJ files in.
         max_cycles: stop at this cycle (``None``: until every cog stopped).
         compat, inputs: as for :class:`spinemu.chip.Chip`.
-        parts: bench parts to attach to the chip (each ``part.attach(chip)``
-            before the run), e.g. a :class:`spinemu.bench.SerialConsole`.
+        parts: a :class:`spinemu.bench.Bench` or a list of bench parts, attached
+            to the chip before the run, e.g. a :class:`spinemu.bench.SerialConsole`.
 
     Returns:
         a :class:`spinemu.chip.RunResult` (trace, hub, end cycle, ...).

@@ -314,8 +314,9 @@ def run_class(cls, image: bytes, *, max_cycles=None, compat: str = "spinsim", in
     T = load_timing()
     epilogue = T.reg[(0x3F, 0)]        # the ROM's COGID ($3F $89) before COGSTOP
     chip = PythonChip(image, top, epilogue, compat=compat, inputs=inputs)
-    for part in parts:
-        part.attach(chip)
+    if parts:
+        from ..bench import Bench
+        (parts if isinstance(parts, Bench) else Bench(parts)).attach(chip)
     RT.final = _NEVER if max_cycles is None else max_cycles
     result = chip.run(max_cycles)
     result.stats["stacks"] = list(chip.engine.stacks)
