@@ -18,7 +18,13 @@ Sizing follows what OpenSpin 1.00.81 does (observed with probe programs):
   forward jump that needs exactly 63 stays long.
 * string addresses always use the 2-byte offset form (``87 80 xx``);
 * the string pool is in source order (an ``other`` case block is compiled
-  before the other blocks but its strings keep their place).
+  before the other blocks but its strings keep their place);
+* in an assignment whose target has a string in it (``a[strsize(string("x"))]
+  := ...``), the strings of the value get addresses but no place in the pool:
+  OpenSpin allocates the target's strings, then the value's, then goes back
+  to the target and allocates its strings again from where they started, so
+  the strings that follow are written over the value's (those addresses then
+  hold other text).  spinemu makes the same image.
 """
 from __future__ import annotations
 
@@ -64,6 +70,8 @@ class CodeBuffer:
         self.pos = None
         self.strings: list[bytes] = []
         self._string_index: dict = {}
+        self._phantom: set = set()      # indexes of strings overwritten in the pool (see above)
+        self.phantom_depth = 0          # > 0 while compiling such an assignment's value
 
     # -- emitting
     def emit(self, data, note: str = "") -> None:
@@ -91,6 +99,8 @@ class CodeBuffer:
         index = len(self.strings)
         self.strings.append(data + b"\0")
         self._string_index[index] = (where.line, where.col) if where is not None else (0, index)
+        if self.phantom_depth:
+            self._phantom.add(index)
         self.items.append([_STR, b"", self.pos, note, index])
 
     def mark(self, label: Label) -> None:
@@ -154,9 +164,17 @@ class CodeBuffer:
         order = sorted(range(len(self.strings)), key=lambda i: self._string_index[i])
         pool_offset = {}
         at = code_end
+        resume = None           # where the pool goes on after a run of overwritten strings
         for i in order:
+            if i in self._phantom:
+                if resume is None:
+                    resume = at
+            elif resume is not None:
+                at, resume = resume, None
             pool_offset[i] = at
             at += len(self.strings[i])
+        if resume is not None:
+            at = resume
         for item in self.items:
             kind = item[0]
             if kind == _MARK:
@@ -177,6 +195,8 @@ class CodeBuffer:
                 spans.append(Span(addr, data, item[2], item[3]))
             addr += len(data)
         for i in order:
+            if i in self._phantom:
+                continue
             s = self.strings[i]
             spans.append(Span(addr, s, None, "string"))
             addr += len(s)

@@ -4,8 +4,9 @@ What OpenSpin 1.00.81 does, and this module copies (observed with probes):
 
 * no constant folding of operators: ``3 + 4`` pushes 3, pushes 4, adds; only
   a literal, a constant name, ``obj#NAME``, a character, ``constant()``,
-  ``float()``, ``round()``, ``trunc()`` and ``-`` written directly before one
-  of those (``-5``, ``-K``, but not ``-(5)``) become one constant;
+  ``float()``, ``round()``, ``trunc()`` and ``-`` written directly before a
+  literal or a name (``-5``, ``-K``, but not ``-(5)``, ``-constant(5)`` or
+  ``-obj#K``, which negate at run time) become one constant;
 * constants: -1, 0, 1 have their own opcodes; values of the form
   ``2 << n`` (optionally minus 1, optionally inverted) use PUSH_MASK; other
   values use PUSH_IMM1..4, or the inverted value followed by BIT_NOT when
@@ -19,6 +20,7 @@ from __future__ import annotations
 from ..bytecode import BY_MNEMONIC, MATH_BY_SYMBOL, REGISTER_NAMES, encode_unsigned, mask_code
 from .. import messages as msg
 from ..frontend.ast import (
+    walk,
     Assign, Builtin, Call, Float, KConst, MemberRef, MemRef, NameRef, Number, ObjCall, ObjConst, Paren,
     Range, RegRef, ResultRef, SprRef, Str, Unary, key,
 )
@@ -86,6 +88,11 @@ def push_const_bytes(bits: int) -> bytes:
     return direct
 
 
+def _has_string(node) -> bool:
+    """Whether ``string(...)`` appears anywhere in ``node``."""
+    return any(type(n) is Builtin and n.name == "string" for n in walk(node))
+
+
 def _imm(v: int) -> bytes:
     n = 1 if v < 0x100 else 2 if v < 0x10000 else 3 if v < 0x1000000 else 4
     return bytes((0x37 + n,)) + v.to_bytes(n, "big")
@@ -124,7 +131,7 @@ class ExprCompiler:
             return self.fold(node)
         if t is Builtin and node.name in _FOLDED_BUILTINS:
             return self.fold(node)
-        if t is Unary and node.op == "-" and not isinstance(node.operand, (Paren, Unary)):
+        if t is Unary and node.op == "-" and not isinstance(node.operand, (Paren, Unary, Builtin, ObjConst)):
             inner = self.constant_of(node.operand)
             if inner is not None:
                 return self.fold(node)
@@ -342,7 +349,15 @@ class ExprCompiler:
 
     # ------------------------------------------------------------------ assignments
     def assign(self, node: Assign, push: bool) -> None:
-        self.expr(node.value)
+        if _has_string(node.target):
+            # the value's strings are written over in the pool, as OpenSpin does (code.py)
+            self.code.phantom_depth += 1
+            try:
+                self.expr(node.value)
+            finally:
+                self.code.phantom_depth -= 1
+        else:
+            self.expr(node.value)
         if node.op == ":=":
             if push:
                 self.var(node.target, USING)
