@@ -89,6 +89,8 @@ NO_METHODS_OR_DAT = "this object has no methods"
 
 # ----------------------------------------------------------------------------- constants
 NEEDS_CONSTANT = "this must be a constant expression"
+CONSTANT_GROUP = ("{what} is not a constant: in a method, '{word}(' starts a constant expression that takes "
+                  "the rest of the expression (as in OpenSpin); put the {word}(...) in parentheses")
 CONSTANT_TOO_LATE = ("'{name}' is not known yet here: it is defined further down from constants defined "
                      "further down still (constants are read in two passes); move its definition up")
 INTEGER_AND_FLOAT = "cannot mix integer and floating-point values here"

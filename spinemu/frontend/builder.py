@@ -224,7 +224,8 @@ class AstBuilder:
           constant expression that takes every operator and operand after it
           up to the end of the enclosing expression: ``x * round(1.5) + 2`` is
           ``x * constant(round(1.5) + 2)`` (and ``round(1.5) + x`` is an error,
-          ``x`` not being a constant).  The group becomes a ``constant()``.
+          ``x`` not being a constant).  The group becomes a ``constant()``
+          whose ``starter`` attribute names the word that began it.
         """
         t = type(node)
         if t is Binary:
@@ -244,6 +245,7 @@ class AstBuilder:
                 group = Builtin(node.pos, "constant", [Binary(node.pos, op, node, right)])
             else:
                 return None
+            group.starter = getattr(node, "starter", node.name)   # for the back ends' messages
             self._groups.add(id(group))
             return group
         return None

@@ -10,7 +10,8 @@ CON values (Propeller Manual, CON): ``name = expr`` and enumerations
 section and continues across its lines; definitions may refer to children's
 constants (``obj#NAME``) and to constants defined further down, as far as
 OpenSpin's two passes over the lines allow: ``A = B`` before ``B = 1`` works,
-``A = B`` before ``B = C`` before ``C = 1`` does not.
+``A = B`` before ``B = C`` before ``C = 1`` does not, and neither does ``A = B``
+before ``B = obj#C`` (the first pass does not see the children's constants).
 """
 from __future__ import annotations
 
@@ -137,6 +138,8 @@ def _fold_constants(unit: ObjectUnit, errors: list) -> None:
             pending_undefined.setdefault(id(node), node)
             raise NotConstant(node)
         if isinstance(node, ObjConst):
+            if first_pass[0]:
+                raise NotConstant(node)     # OpenSpin's first pass does not see children's constants
             return child_constant(unit, node)
         raise NotConstant(node)
 
@@ -147,7 +150,9 @@ def _fold_constants(unit: ObjectUnit, errors: list) -> None:
     reported: set = set()
     # OpenSpin reads the CON lines twice, in order: a constant may use one defined further
     # down only if that one is known by the end of the first pass
-    for _pass in range(2):
+    first_pass = [True]
+    for pass_no in range(2):
+        first_pass[0] = pass_no == 0
         pending_undefined.clear()
         counter: Optional[int] = 0
         section = None

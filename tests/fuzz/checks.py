@@ -36,6 +36,8 @@ def check_compile(program, ctx: dict) -> str | None:
     """OpenSpin's image and spinemu's are byte-identical (or both compilers reject the program)."""
     ref, ref_err = oracles.openspin_compile(program, ctx.get("openspin_exe", oracles.OPENSPIN))
     ctx["openspin"] = (ref, ref_err)
+    if ref is None and ref_err.startswith("crashed"):
+        return f"OpenSpin {ref_err} (a program the generator should not make)"
     mine, my_err = _images(program, ctx)
     if ref is None and mine is None:
         return None

@@ -302,6 +302,7 @@ class MethodGen:
         elif kind == "from":
             var, bound = free[0], free[1]
             held = [var.name, bound.name]
+            self.reserved.extend(held)
             self.emit(indent, f"{bound.name} := ({self.expr(2)}) & 7")
             start, stop = str(rng.between(-2, 7)), bound.name
             if rng.chance(0.5):
@@ -317,6 +318,7 @@ class MethodGen:
         else:
             k = free[0]
             held = [k.name]
+            self.reserved.extend(held)      # the condition may not write the counter either
             self.emit(indent, f"{k.name} := 0")
             if kind == "while":
                 word = rng.pick(["while", "until"])
@@ -329,7 +331,6 @@ class MethodGen:
                 if kind == "forever":
                     self.emit(inner, f"{rng.case('if')} ++{k.name} > {n}")
                     self.emit(inner + 2, rng.case("quit"))
-        self.reserved.extend(held)
         self.loops += 1
         self.mult *= n
         self.block(inner, depth - 1)
@@ -480,7 +481,8 @@ class MethodGen:
             op = rng.weighted(INT_BINARY) if word != "float" else rng.pick(["+", "-", "*", "#>"])
             more = consts.int_term(0) if word != "float" else consts.float_term()
             if op in ("/", "//"):
-                more = consts.nonzero_divisor(more)
+                text = f"({text}{spaced(op)}{consts.nonzero_divisor(more)})"
+                continue
             text += spaced(op) + more
         if rng.chance(0.4):     # what comes before it stays run-time code
             text = f"{self.operand(1)}{spaced(rng.pick(['+', '-', '*', '^', '|']))}{text}"

@@ -147,11 +147,12 @@ class ConstGen:
         if op == "**" and rng.chance(0.4):
             left = f"-{int_literal(rng, rng.between(1, 1 << rng.between(1, 31)))}"
         text = f"{left}{spaced(rng.case(op) if op in WORD_OPS else op)}{right}"
-        return f"({text})" if rng.chance(0.5) else text
+        # a division keeps its parentheses: a tighter operator after it would change the divisor
+        return f"({text})" if rng.chance(0.5) or op in ("/", "//") else text
 
     def nonzero_divisor(self, text: str) -> str:
         if self.rng.chance(0.5):
-            return f"({text} | 1)"
+            return f"(({text}) >> 1 | 1)"     # odd and positive: not 0, not -1 (OpenSpin crashes on NEGX / -1)
         return int_literal(self.rng, self.rng.pick([1, 2, 3, 7, 10, 255, 0x7FFFFFFF, 0x10000]))
 
     def int_term(self, depth: int, paren: bool = False) -> str:
@@ -164,6 +165,7 @@ class ConstGen:
             self.used.append(name)
             return rng.case(name)
         if kind == "child":
+            self.used.append("#")
             return rng.pick(self.scope.child_ints)
         if kind == "kconst":
             return rng.case(rng.pick(["TRUE", "FALSE", "POSX", "NEGX"]))
@@ -193,7 +195,7 @@ class ConstGen:
             if float(right.replace("_", "")) == 0.0:
                 right = "2.5"
         text = f"{left}{spaced(rng.case(op) if op in WORD_OPS else op)}{right}"
-        return f"({text})" if rng.chance(0.5) else text
+        return f"({text})" if rng.chance(0.5) or op == "/" else text
 
     def float_term(self) -> str:
         rng = self.rng

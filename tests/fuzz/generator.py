@@ -213,7 +213,7 @@ class _ProgramGen:
                 name = names.new("K")
                 defs.append((name, consts.int_expr(rng.between(0, 3))))
                 cscope.ints.append(name)
-            deps[name] = list(consts.used)
+            deps[name] = list(consts.used)      # "#": a child's constant
         # constants may be used before the line that defines them, as far as OpenSpin's
         # two passes over the CON lines resolve them
         if rng.chance(0.5):
@@ -324,11 +324,13 @@ class _ProgramGen:
 def _two_passes_resolve(order: list, deps: dict) -> bool:
     """Whether definitions in this order all resolve in two passes (each pass in order)."""
     known: set = set()
-    for _ in range(2):
+    for pass_no in range(2):
+        if pass_no:
+            known.add("#")
         for name in order:
             if name not in known and all(d in known for d in deps[name]):
                 known.add(name)
-    return len(known) == len(order)
+    return all(name in known for name in order)
 
 
 def _rename_result(text: str) -> str:

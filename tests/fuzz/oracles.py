@@ -32,6 +32,8 @@ def openspin_compile(program, exe: str = OPENSPIN):
         if r.returncode == 0 and os.path.exists(out):
             with open(out, "rb") as fh:
                 return fh.read(), None
+        if r.returncode < 0:
+            return None, f"crashed (signal {-r.returncode})"
         return None, (r.stdout + r.stderr).strip().replace(tmp + os.sep, "")
 
 
