@@ -12,7 +12,9 @@ What keeps a generated method well-defined and finite:
 * calls go down a chain (a method calls only methods generated before it,
   and its children's methods), plus one method that calls itself with a
   depth parameter it cannot write; a method that may abort is called with
-  ``\\`` from the top method;
+  ``\\`` from the top method and inside another call's arguments (an abort
+  unwinding past a call being set up -- its arguments or its object index --
+  makes the ROM interpreter run wild);
 * ``cost`` estimates the bytecodes a call runs so the program stays small;
 * the registers written are OUTA/DIRA (and OUTB/DIRB, FRQA/FRQB): no
   counter is started, nothing reads INA or CNT, so results do not depend on
@@ -107,6 +109,7 @@ class MethodGen:
         self.ready: list[Var] = [Var("result", 4, kind="result")] + list(params)
         self.reserved: list[str] = []
         self.loops = 0          # open loops (next/quit allowed when > 0)
+        self.in_args = 0        # > 0 while writing a call's arguments
         self.mult = 1
         self.cost = 0
         self.aborts = False
@@ -159,7 +162,9 @@ class MethodGen:
         rng = self.rng
         d = self.params[0].name
         self.emit(indent, f"{rng.case('if')} {d} > 0")
+        self.in_args += 1
         call = f"{self.method.name}({d} - 1{''.join(', ' + self.expr(1) for _ in range(self.method.params - 1))})"
+        self.in_args -= 1
         if self.method.aborts or rng.chance(0.2):
             call = "\\" + call
         op = rng.pick([":=", "+=", "^=", "-="])
@@ -533,20 +538,26 @@ class MethodGen:
         child, m = rng.pick(options)
         self.charge(m.cost)
         args = []
+        self.in_args += 1
         for i in range(m.params):
             if i == 0 and m.recursive:
                 args.append(f"({self.expr(depth)}) & 3")
             else:
                 args.append(self.expr(depth))
+        self.in_args -= 1
         name = rng.case(m.name)
         if child is not None:
             if child.count:
+                self.in_args += 1       # the index is computed after the call's frame is set up
                 name = f"{child.name}[{self.index(child.count, depth)}].{name}"
+                self.in_args -= 1
             else:
                 name = f"{child.name}.{name}"
         text = name + (f"({', '.join(args)})" if args else "")
         if m.aborts:
-            if self.is_top or rng.chance(0.7):
+            # an abort must not unwind past a call whose arguments are being computed: the
+            # ROM interpreter would then call through a frame that is gone (the program runs wild)
+            if self.is_top or self.in_args or rng.chance(0.7):
                 text = "\\" + text
             else:
                 self.aborts = True

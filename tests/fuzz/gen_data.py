@@ -29,10 +29,11 @@ class DatLabel:
 class DatGen:
     """Writes the DAT lines of one object."""
 
-    def __init__(self, rng: Rand, consts: ConstGen, names):
+    def __init__(self, rng: Rand, consts: ConstGen, names, add_file=None):
         self.rng = rng
         self.consts = consts
         self.names = names
+        self.add_file = add_file        # add_file(text) -> file name, for ``file "name"`` lines
         self.labels: list[DatLabel] = []
         self.lines: list[str] = []
 
@@ -41,7 +42,8 @@ class DatGen:
         self.lines.append(rng.case("DAT"))
         for _ in range(n_lines):
             kind = rng.weighted({"data": 8, "array": 3, "string": 2, "table": 2 if self.labels else 0,
-                                 "align": 1, "bare_label": 1, "file": 0})
+                                 "align": 1, "bare_label": 1, "pasm": 1,
+                                 "file": 0.3 if self.add_file else 0})
             getattr(self, "_" + kind)()
         return self.lines
 
@@ -133,6 +135,65 @@ class DatGen:
 
     def _align(self) -> None:
         self.lines.append(" " * self.rng.between(1, 12) + self.rng.case(self.rng.pick(list(SIZES))))
+
+    def _pasm(self) -> None:
+        """An ``org`` block of PASM that no cog runs: every mnemonic, condition, effect and operand form."""
+        from spinemu.pasm import CONDITIONS, INSTRUCTIONS, REGISTERS
+        rng = self.rng
+        lines = self.lines
+        base = self._label()
+        origin = rng.pick([0, 0, 16, 100])
+        lines.append(f"{base}{' ' * rng.between(1, 6)}{rng.case('org')} {origin}" if rng.chance(0.8)
+                     else f"{base}{' ' * rng.between(1, 6)}{rng.case('org')}")
+        names = [base] + [self._label() for _ in range(rng.between(2, 6))]
+        # local labels belong to the plain label before them: they come right after the org
+        # line and only lines of that scope (the other local lines) name them
+        locals_ = [f":l{i}" for i in range(rng.between(0, 2))]
+        mnemonics = sorted(INSTRUCTIONS)
+        scope: list = []
+        returns: list = []
+        operand = lambda: rng.pick([rng.case(rng.pick(names)), rng.case(rng.pick(list(REGISTERS))),
+                                    str(rng.between(0, 15)), "$"] + scope)
+        for name in locals_ + names[1:]:
+            scope = locals_ if name.startswith(":") else []
+            mnem = rng.pick(mnemonics)
+            while mnem == "call" and scope:         # its x_ret line would end the local scope
+                mnem = rng.pick(mnemonics)
+            ins = INSTRUCTIONS[mnem]
+            form = ins.operands
+            if form == "call":          # call #x needs x_ret: point it at a label that has one
+                target = rng.pick(names)
+                if target not in returns:
+                    returns.append(target)
+                    lines.append(f"{target}_ret{' ' * rng.between(1, 4)}{rng.case('ret')}")
+                text = f"{rng.case('call')} #{target}"
+            else:
+                src = operand()
+                src = f"#{src}" if rng.chance(0.5) or form == "s" and rng.chance(0.5) else src
+                text = {"ds": f"{mnem} {operand()}, {src}", "d": f"{mnem} {operand()}", "s": f"{mnem} {src}",
+                        "": mnem}[form]
+                text = rng.case(text.split(" ", 1)[0]) + text[len(text.split(" ", 1)[0]):]
+                if ins.kind != "nop" and rng.chance(0.4):
+                    effects = ["wz", "wc"] + (["wr", "nr"] if ins.allows_wr_nr else [])
+                    text += " " + ", ".join(rng.case(e) for e in effects[:rng.between(1, len(effects))])
+            cond = rng.case(rng.pick(list(CONDITIONS))) + " " if ins.kind != "nop" and rng.chance(0.3) else ""
+            lines.append(f"{name}{' ' * rng.between(1, 6)}{cond}{text}")
+        for _ in range(rng.between(0, 2)):
+            lines.append(f"{self._label()}{' ' * rng.between(1, 6)}{rng.case('res')} {rng.between(0, 4)}")
+        if rng.chance(0.5):
+            lines.append(f"{' ' * rng.between(1, 6)}{rng.case('fit')}{' ' + str(0x1F0) if rng.chance(0.5) else ''}")
+        # code may read these labels' longs (read only: they are instructions)
+        for name in names:
+            self.labels.append(DatLabel(name, 4))
+
+    def _file(self) -> None:
+        """``label file "name"``: the bytes of a generated data file."""
+        rng = self.rng
+        text = "".join(rng.pick("abcdefghij0123456789 ,.;") for _ in range(rng.between(1, 40)))
+        name = self.add_file(text)
+        label = self._label()
+        self.labels.append(DatLabel(label, 1))
+        self.lines.append(f"{label}{' ' * rng.between(1, 6)}{rng.case('file')} \"{name}\"")
 
     def _bare_label(self) -> None:
         label = self._label()

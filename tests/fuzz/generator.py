@@ -17,7 +17,10 @@ What a program contains (each object drawn at random from these):
 * VAR: longs, words and bytes, scalars and arrays.
 * DAT: data lines of every size with size overrides in the line
   (``byte 1, word 2, long 3, 4``), repetition ``value[count]``, strings,
-  alignment lines, labels alone on a line, tables of ``@label`` offsets.
+  alignment lines, labels alone on a line, tables of ``@label`` offsets,
+  ``file "fzN.dat"`` (a generated data file), and ``org`` blocks of PASM
+  (every mnemonic, condition, effect, ``#``/register/``$``/``:local``
+  operands, ``call``/``_ret``, ``res``, ``fit``) that no cog runs.
 * OBJ: generated child objects (up to two levels), the same file under two
   names, object arrays ``name[n]``, ``.spin`` written or not.
 * methods (PUB/PRI) with parameters, a named or unnamed result, locals and
@@ -154,7 +157,7 @@ class _ProgramGen:
         con_lines = self._con(consts, cscope, names, top)
 
         var_lines, vars_ = self._var(names, top)
-        dat = DatGen(rng, consts, names)
+        dat = DatGen(rng, consts, names, self._add_data_file)
         dat_lines = dat.section(rng.between(0, 6)) if rng.chance(0.8) else []
         for lb in dat.labels:
             vars_.append(Var(lb.name, lb.size, lb.count, "dat", writable=lb.count is not None, label=lb))
@@ -179,6 +182,12 @@ class _ProgramGen:
         self.files[filename] = "\n".join(line for sec in sections for line in sec) + "\n"
         ints = [n for n in cscope.ints if not n.startswith("_")]
         return _Built(filename, pubs, ints)
+
+    def _add_data_file(self, text: str) -> str:
+        self.n_files += 1
+        name = f"fz{self.n_files}.dat"
+        self.files[name] = text
+        return name
 
     def _children(self, level: int, names: _Names):
         rng = self.rng
@@ -239,7 +248,8 @@ class _ProgramGen:
         rng = self.rng
         parts = []
         if rng.chance(0.7):
-            parts.append("#" + (int_literal(rng, rng.between(0, 20)) if rng.chance(0.7) else consts.int_expr(1)))
+            start = int_literal(rng, rng.between(0, 20)) if rng.chance(0.7) else consts.int_expr(1)
+            parts.append("#" + (f"({start})" if start[0] in "-+!|^<>~?@#=*/&" else start))
         for _ in range(rng.between(1, 5)):
             name = names.new("E")
             parts.append(f"{name}[{int_literal(rng, rng.between(0, 4))}]" if rng.chance(0.3) else name)
