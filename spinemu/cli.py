@@ -35,7 +35,12 @@ examples:
   spinemu trace show demo.log --pins 0..4                timeline of pins 0-4
   spinemu trace steps demo.log --pins 1..4               stepper decoder
   spinemu disasm demo.binary                             listing of an image
-"""
+
+OBJ and DAT file names are looked up in the source's folder, the -L folders, the
+folders in SPINEMU_PATH (separated by '%s') and the Spin library folders of an
+installed Propeller Tool, PropellerIDE or SimpleIDE; a name found only in another
+letter case (a project written on Windows) is used with a warning.
+""" % os.pathsep
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -258,6 +263,8 @@ def cmd_run(args, out: _Out) -> int:
     if args.timing or args.debug_in:
         raise UsageError("--timing and --debug-in apply to BASIC Stamp programs (.bs2) only")
     image, source_map, prog = _load_target(args.target, args.include, args.define)
+    for w in getattr(prog, "warnings", ()):
+        out.err_console.print(w.render(), markup=False)
     from .image import ImageHeader
 
     clock = ImageHeader.parse(image).clkfreq or CLOCK_DEFAULT
@@ -452,7 +459,8 @@ def cmd_sidebyside(args, out: _Out) -> int:
 # ----------------------------------------------------------------------------- parser
 def _obj_search_option(p) -> None:
     p.add_argument("-L", "-I", dest="include", action="append", metavar="DIR",
-                   help="add a folder to search for OBJ files (after the source's own folder)")
+                   help="add a folder to search for OBJ and DAT file names (after the source's own folder, "
+                        "before SPINEMU_PATH and the installed tools' libraries)")
 
 
 def _define_option(p) -> None:

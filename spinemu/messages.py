@@ -13,6 +13,12 @@ EMPTY_FILE = "the file is empty"
 BAD_ENCODING = "the file is not valid UTF-16: {detail}"
 OBJECT_NOT_FOUND = "cannot find object file '{name}' (looked in {where})"
 DAT_FILE_NOT_FOUND = "cannot find data file '{name}' (looked in {where})"
+STANDARD_OBJECT_HINT = ("'{name}' is an object of the Propeller Tool's library (also shipped with PropellerIDE "
+                        "and SimpleIDE): put that library's folder in the {var} environment variable or give "
+                        "it with -L DIR")
+AMBIGUOUS_FILE = ("'{name}' matches several files that differ only in letter case in {folder}: {candidates}; "
+                  "spell the name exactly")
+NAME_IN_OTHER_CASE = "'{name}' is spelled '{actual}' on disk ({folder}); using it, as the Propeller Tool on Windows would"
 OBJECT_RECURSION = "object '{name}' includes itself"
 
 # ----------------------------------------------------------------------------- lexer

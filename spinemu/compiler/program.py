@@ -157,7 +157,7 @@ def _compile_unit(top_unit) -> CompiledProgram:
                 entries.append((base + s.offset, base + s.offset + len(s.data), s.pos.path, s.pos.line))
     vbase = int.from_bytes(image[8:10], "little")
     layout = _instance_layout(top, "", addr, vbase, compiled)
-    return CompiledProgram(image, LineTable(entries), layout, [], placed, addr)
+    return CompiledProgram(image, LineTable(entries), layout, list(top_unit.search.warnings), placed, addr)
 
 
 def _sorted(errors: list) -> list:
@@ -171,19 +171,24 @@ def _sorted(errors: list) -> list:
     return out
 
 
-def compile_file(path: str, include_dirs=(), defines=()) -> CompiledProgram:
+def compile_file(path: str, include_dirs=(), defines=(), search=None) -> CompiledProgram:
     """Compile a Spin program (top object ``path``) to a Propeller image.
 
     Args:
         path: the top object's .spin file.
-        include_dirs: more folders to look for OBJ files in (after the source's folder).
+        include_dirs: more folders to look for OBJ and ``file`` names in (after the source's
+            folder; then come the ``SPINEMU_PATH`` folders and the installed tools' libraries).
         defines: names defined for ``#ifdef`` in every file (OpenSpin's ``-D``).
+        search: a :class:`spinemu.frontend.search.SearchPath` to use instead (``include_dirs``
+            is then ignored).
 
     Raises:
         ParseError: syntax errors.
         CompileError: anything else wrong (unknown names, missing objects, ...).
+
+    A name found only in another letter case is used with a warning (``prog.warnings``).
     """
-    return _compile_unit(load_program(os.fspath(path), include_dirs, defines=defines))
+    return _compile_unit(load_program(os.fspath(path), include_dirs, defines=defines, search=search))
 
 
 def compile_source(text: str, name: str = "main.spin", include_dirs=(),
