@@ -48,7 +48,12 @@ examples:
                                                          parts on the pins: the motor's steps per run
   spinemu trace decode i2c run.log --pins 28,29          I2C transfers (addresses, data, ACK/NAK)
   spinemu disasm demo.binary                             listing of an image
-"""
+
+OBJ and DAT file names are looked up in the source's folder, the -L folders, the
+folders in SPINEMU_PATH (separated by '%s') and the Spin library folders of an
+installed Propeller Tool, PropellerIDE or SimpleIDE; a name found only in another
+letter case (a project written on Windows) is used with a warning.
+""" % os.pathsep
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -593,7 +598,8 @@ _TRACE_DESCRIPTIONS = {
 
 def _obj_search_option(p) -> None:
     p.add_argument("-L", "-I", dest="include", action="append", metavar="DIR",
-                   help="add a folder to search for OBJ files (after the source's own folder)")
+                   help="add a folder to search for OBJ and DAT file names (after the source's own folder, "
+                        "before SPINEMU_PATH and the installed tools' libraries)")
 
 
 def _define_option(p) -> None:

@@ -294,7 +294,7 @@ def build_handlers(chip, timing: Timing):
         i = (c.sp - 4) >> 2
         v = (L[i] - 1) & MASK32
         if v:
-            L[i] = v
+            L[i] = v            # the ROM writes the count back only when it loops again
             c.pc += off
             return T.djnz[(long_, True)]
         c.sp -= 4                   # popped: the count's long keeps its last value (1), as on the chip
@@ -377,18 +377,20 @@ def build_handlers(chip, timing: Timing):
         return T.lookdown_value[False]
 
     def op_lookup_range(c, op, t):
-        hi = _signed(pop(c))
-        lo = _signed(pop(c))
+        # 32-bit arithmetic as the ROM does it: count = |hi - lo| + 1 (wrapping, so
+        # $8000_0000..$7FFF_FFFF counts 0 items), matched when index - base < count unsigned
+        hi = pop(c)
+        lo = pop(c)
         sp = c.sp
         base_i = (sp - 12) >> 2
-        base = _signed(L[base_i])
-        index = _signed(L[(sp - 4) >> 2])
-        span = abs(hi - lo)
-        k = index - base
-        if 0 <= k <= span:
-            _look_found(c, (lo + k if hi >= lo else lo - k) & MASK32)
+        base = L[base_i]
+        up = _signed(hi) >= _signed(lo)
+        count = ((hi - lo if up else lo - hi) + 1) & MASK32
+        k = (L[(sp - 4) >> 2] - base) & MASK32
+        if k < count:
+            _look_found(c, (lo + k if up else lo - k) & MASK32)
             return T.lookup_range[True]
-        L[base_i] = (base + span + 1) & MASK32
+        L[base_i] = (base + count) & MASK32
         return T.lookup_range[False]
 
     def op_lookdown_range(c, op, t):

@@ -212,8 +212,8 @@ def _compile_unit(top_unit) -> CompiledProgram:
                                 s.pos.col))
     vbase = int.from_bytes(image[8:10], "little")
     layout = _instance_layout(top, "", addr, vbase, compiled)
-    hints = program_hints(c.unit for c in compiled.values())
-    return CompiledProgram(image, LineTable(entries), layout, hints, placed, addr)
+    warnings = list(top_unit.search.warnings) + program_hints(c.unit for c in compiled.values())
+    return CompiledProgram(image, LineTable(entries), layout, warnings, placed, addr)
 
 
 def _sorted(errors: list) -> list:
@@ -227,19 +227,24 @@ def _sorted(errors: list) -> list:
     return out
 
 
-def compile_file(path: str, include_dirs=(), defines=()) -> CompiledProgram:
+def compile_file(path: str, include_dirs=(), defines=(), search=None) -> CompiledProgram:
     """Compile a Spin program (top object ``path``) to a Propeller image.
 
     Args:
         path: the top object's .spin file.
-        include_dirs: more folders to look for OBJ files in (after the source's folder).
+        include_dirs: more folders to look for OBJ and ``file`` names in (after the source's
+            folder; then come the ``SPINEMU_PATH`` folders and the installed tools' libraries).
         defines: names defined for ``#ifdef`` in every file (OpenSpin's ``-D``).
+        search: a :class:`spinemu.frontend.search.SearchPath` to use instead (``include_dirs``
+            is then ignored).
 
     Raises:
         ParseError: syntax errors.
         CompileError: anything else wrong (unknown names, missing objects, ...).
+
+    A name found only in another letter case is used with a warning (``prog.warnings``).
     """
-    return _compile_unit(load_program(os.fspath(path), include_dirs, defines=defines))
+    return _compile_unit(load_program(os.fspath(path), include_dirs, defines=defines, search=search))
 
 
 def compile_source(text: str, name: str = "main.spin", include_dirs=(),

@@ -229,18 +229,23 @@ def _look_cycles(k) -> None:
 
 
 def _look(index: int, items, base: int) -> int:
-    i = index - base
+    # 32-bit arithmetic as the ROM's LOOKUP_RANGE: a range counts (|hi - lo| + 1) & $FFFF_FFFF
+    # items ($8000_0000..$7FFF_FFFF none) and matches when index - base < count, unsigned
     for k, item in enumerate(items):
+        i = (index - base) & M32
         if isinstance(item, range):
-            if 0 <= i < len(item):
+            up = item.step > 0
+            lo, hi = item.start, (item.stop - 1 if up else item.stop + 1)
+            count = ((hi - lo if up else lo - hi) + 1) & M32
+            if i < count:
                 _look_cycles(k)
-                return item[i]
-            i -= len(item)
+                return wrap(lo + i if up else lo - i)
+            base = (base + count) & M32
         else:
             if i == 0:
                 _look_cycles(k)
                 return item
-            i -= 1
+            base = (base + 1) & M32
     return 0
 
 
