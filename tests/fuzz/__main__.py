@@ -62,6 +62,11 @@ def main(argv=None) -> int:
     if unknown:
         ap.error(f"unknown check {', '.join(unknown)} (available: {', '.join(CHECKS)})")
     options = {"openspin_exe": a.openspin, "spinsim_exe": a.spinsim}
+    needs = {"compile": [("OpenSpin", a.openspin, "--openspin")], "reference": [("spinsim", a.spinsim, "--spinsim")]}
+    for check in checks:
+        for tool, exe, flag in needs.get(check, []):
+            if not oracles.available(exe):
+                ap.error(f"the {check} check needs {tool}, not found at {exe} (give {flag} PATH)")
 
     if a.seed is not None:
         print(generate(a.seed).text())
