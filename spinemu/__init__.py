@@ -94,7 +94,7 @@ def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] =
         ``.cog_events``, ``.warnings``.
     """
     from .chip import Chip
-    from .image import ImageHeader, load_image
+    from .image import FALLBACK_CLOCK_HZ, ImageHeader, load_image
 
     if isinstance(target, (bytes, bytearray)):
         image = load_image(bytes(target))
@@ -105,7 +105,7 @@ def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] =
             image = load_image(f.read(), str(target))
     limit = cycles
     if seconds is not None:
-        limit = int(round(seconds * (ImageHeader.parse(image).clkfreq or 80_000_000)))
+        limit = int(round(seconds * (ImageHeader.parse(image).clkfreq or FALLBACK_CLOCK_HZ)))
     return Chip(image, compat=compat, inputs=inputs).run(max_cycles=limit)
 
 

@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 from typing import Callable, Optional
 
 from ..diagnostics import EmulationError
-from ..image import BOOT_FRAME, HUB_SIZE, ImageHeader, load_image
+from ..image import BOOT_FRAME, FALLBACK_CLOCK_HZ, HUB_SIZE, ImageHeader, load_image
 from ..trace import PinTrace
 from .blocks import HOT as BLOCK_THRESHOLD
 from .cog import PARKED, RUNNING, STOPPED, IDLE_PASM, Cog
@@ -135,7 +135,7 @@ class Chip(Pins, Scheduler):
         self.lock_used = [False] * 8
         if self.spinsim:
             self.lock_used[0] = True        # spinsim keeps lock 0 for itself
-        self.clock_hz = self.header.clkfreq
+        self.clock_hz = self.header.clkfreq or FALLBACK_CLOCK_HZ     # the time base of the trace
         from .counters import Counters
         self.counters = Counters(self)
         self.counters_on = False        # some counter is in an output mode (else pins skip them)
@@ -150,6 +150,9 @@ class Chip(Pins, Scheduler):
         self.pin_events: list = []          # (cycle, seq, cog, dira, outa, running)
         self.cog_events: list = []
         self.warnings: list = []
+        if not self.header.clkfreq:
+            self.warnings.append(f"the image's header gives a clock of 0 Hz; times are counted at "
+                                 f"{FALLBACK_CLOCK_HZ:,} Hz (RCFAST)")
         self._seq = 0
         self._started = False
         self._booted = False
