@@ -10,7 +10,7 @@ from typing import Iterable, Optional
 
 from ..trace import PinTrace
 
-__all__ = ["plot_trace"]
+__all__ = ["plot_trace", "plot_formats"]
 
 
 def _segments(trace: PinTrace, pin: int, start: int, end: int):
@@ -30,6 +30,13 @@ def _segments(trace: PinTrace, pin: int, start: int, end: int):
             t, level = c, new
     runs.append((t, end, level))
     return runs
+
+
+def plot_formats() -> set:
+    """The file extensions (without the dot) matplotlib can save a figure as: png, svg, pdf, ..."""
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    return set(FigureCanvasBase.get_supported_filetypes())
 
 
 def plot_trace(trace: PinTrace, pins: Optional[Iterable[int]] = None, start: int = 0,

@@ -127,27 +127,66 @@ class PinStimulus:
             t = nxt
 
 
+#: The latest time a stimulus step may name: about 32 years (any later time is never reached).
+MAX_SECONDS = 1e9
+
+
 def parse_input_spec(text: str) -> dict:
     """Parse a command-line stimulus: ``"3=1"``, ``"3=0@0,1@0.5,0@0.52"``.
 
-    Several pins are separated by ``;``.  Times are seconds.
+    Several pins are separated by ``;``.  Times are seconds, 0 to
+    :data:`MAX_SECONDS`.  Levels are 0 or 1.
 
     >>> parse_input_spec("3=1;5=0@0,1@0.25")
     {3: 1, 5: [(0.0, 0), (0.25, 1)]}
+    >>> parse_input_spec("3=1@nan")
+    Traceback (most recent call last):
+    ...
+    ValueError: time 'nan' in '3=1@nan' is not a number of seconds (0 to 1e+09)
+
+    Raises:
+        ValueError: saying which part of ``text`` is wrong.
     """
     out: dict = {}
     for part in text.split(";"):
         part = part.strip()
         if not part:
             continue
-        pin, _, rest = part.partition("=")
-        pin_n = int(pin.strip().upper().lstrip("P"))
+        pin, eq, rest = part.partition("=")
+        pin = pin.strip().upper()
+        pin = pin[1:] if pin.startswith("P") else pin
+        if not eq or not _is_decimal(pin) or len(pin) > 3:
+            raise ValueError(f"'{part}' does not start with a pin number and '=' (e.g. P3=1)")
+        pin_n = int(pin)
         if "@" not in rest:
-            out[pin_n] = 1 if int(rest) else 0
+            out[pin_n] = _level(rest, part)
             continue
         steps = []
         for item in rest.split(","):
             lv, _, t = item.partition("@")
-            steps.append((float(t), 1 if int(lv) else 0))
+            steps.append((_seconds(t, part), _level(lv, part)))
         out[pin_n] = steps
     return out
+
+
+def _is_decimal(text: str) -> bool:
+    return text.isascii() and text.isdigit()
+
+
+def _level(text: str, part: str) -> int:
+    text = text.strip()
+    if text not in ("0", "1"):
+        raise ValueError(f"level '{text}' in '{part}' is not 0 or 1")
+    return int(text)
+
+
+def _seconds(text: str, part: str) -> float:
+    import math
+
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value) or not 0 <= value <= MAX_SECONDS:
+        raise ValueError(f"time '{text.strip()}' in '{part}' is not a number of seconds (0 to {MAX_SECONDS:g})")
+    return value
