@@ -31,6 +31,7 @@ from ..frontend.ast import (
     key,
 )
 from ..frontend.constants import Const, ConstError, NotConstant, evaluate, to_signed
+from ..image import HUB_SIZE as HUB_BYTES
 
 __all__ = ["DatSymbol", "DatResult", "assemble_dat"]
 
@@ -259,8 +260,13 @@ class _Assembler:
         here = os.path.dirname(os.path.abspath(self.unit.path))
         path = os.path.join(here, body.filename)
         try:
+            if not os.path.isfile(path):        # missing, a folder, or a device such as /dev/zero
+                raise FileNotFoundError(path)
             with open(path, "rb") as fh:
-                data = fh.read()
+                data = fh.read(HUB_BYTES + 1)   # more than the hub holds cannot fit in any image
+            if len(data) > HUB_BYTES:
+                self.report(msg.DAT_FILE_TOO_BIG.format(name=body.filename, size=HUB_BYTES), body)
+                data = b""
         except OSError:
             self.report(msg.DAT_FILE_NOT_FOUND.format(name=body.filename, where=here), body)
             data = b""

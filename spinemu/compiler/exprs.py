@@ -316,7 +316,10 @@ class ExprCompiler:
             self.code.emit((0x40 | (0x20 if base == "LOC" else 0) | offset | access),
                            getattr(name_node, "name", "result"))
             return
-        self.code.emit(bytes((_mem_op(access, size, base, index is not None),)) + encode_unsigned(offset),
+        # Past $7FFF only a local at exactly $8000 (OpenSpin writes it as $80 $00, offset 0 on the chip)
+        # or an object already reported too big (VAR or DAT over 32 KB): keep 15 bits, as OpenSpin does.
+        operand = encode_unsigned(offset & 0x7FFF, force_long=offset > 0x7F)
+        self.code.emit(bytes((_mem_op(access, size, base, index is not None),)) + operand,
                        getattr(name_node, "name", "result"))
 
     def undefined(self, name: str, node) -> None:

@@ -13,6 +13,7 @@ from .ast import SpinFile
 from .builder import AstBuilder
 from .lalr import Parser, ParseFailure, load_tables
 from .layout import layout
+from .limits import MAX_EXPRESSION_DEPTH, block_nesting_errors, expression_depth_error
 from .lexer import TAB_WIDTH, Token, tokenize, KEYWORDS, _OPERATORS
 from .preprocess import preprocess
 from .source import SourceText, read_source
@@ -107,6 +108,18 @@ def _failure(exc: ParseFailure, source: SourceText, start: str, tokens: list) ->
     return Diagnostic(text, source.path, tok.line, tok.col, source.line(tok.line), "error", length)
 
 
+def _longest_line(tokens) -> int:
+    """Most tokens on one line of ``tokens`` (an expression is never deeper than its token count)."""
+    longest = count = 0
+    line = None
+    for tok in tokens:
+        if tok.line != line:
+            line, count = tok.line, 0
+        count += 1
+        longest = max(longest, count)
+    return longest
+
+
 def parse_text(source: SourceText, defines=()) -> tuple[SpinFile, list]:
     """Parse ``source``; returns the file and the list of error diagnostics (maybe empty).
 
@@ -131,10 +144,18 @@ def parse_text(source: SourceText, defines=()) -> tuple[SpinFile, list]:
 
     def run(tokens, start):
         try:
-            return parser.parse(tokens, start)
+            node = parser.parse(tokens, start)
         except ParseFailure as exc:
             errors.append(_failure(exc, source, start, tokens))
             return None
+        problems = block_nesting_errors(node) if start == "method" else []
+        if _longest_line(tokens) > MAX_EXPRESSION_DEPTH:
+            deep = expression_depth_error(node)
+            problems += [deep] if deep else []
+        for text_, where in problems:
+            errors.append(Diagnostic(text_, source.path, where.pos.line, where.pos.col,
+                                     source.line(where.pos.line)))
+        return node if not problems else None
 
     for section in lexed.sections:
         spin.sections.append((section.kind, section.line))
