@@ -547,6 +547,7 @@ def build_handlers(chip, timing: Timing):
             value = L[c.dbase >> 2]
         abort = op < 0x32
         frames = 0
+        at = c.pc - 1
         while True:
             d = c.dbase
             c.pc = W[(d - 2) >> 1]
@@ -560,6 +561,9 @@ def build_handlers(chip, timing: Timing):
             frames += 1
             if not abort or flags & 2:
                 break
+            if frames > 0x2000:     # more frames than 64 KB holds: the chain loops, the ROM would search for ever
+                raise chip.fault(c, at, "ABORT found no frame to catch it in a frame chain that loops "
+                                          "(a corrupt stack): the interpreter would unwind for ever")
         if not flags & 1:
             push(c, value)
         return T.returns(op, frames, not flags & 1)

@@ -205,12 +205,14 @@ class ObjectCompiler:
             offset = end
         size = (offset + 3) & ~3
         data = bytearray(size)
-        data[0:2] = size.to_bytes(2, "little")
-        data[2] = len(methods) + 1
-        data[3] = len(instances)
+        # A word past $FFFF (an object or a frame over 64 KB) is already an error (here, or in the
+        # memory check after linking); the table is made anyway, as the other errors are collected.
+        data[0:2] = (size & 0xFFFF).to_bytes(2, "little")
+        data[2] = (len(methods) + 1) & 0xFF
+        data[3] = len(instances) & 0xFF
         for i, info in enumerate(infos):
-            data[4 + 4 * i: 8 + 4 * i] = info.offset.to_bytes(2, "little") + \
-                info.locals_size.to_bytes(2, "little")
+            data[4 + 4 * i: 8 + 4 * i] = (info.offset & 0xFFFF).to_bytes(2, "little") + \
+                (info.locals_size & 0xFFFF).to_bytes(2, "little")
         data[table_size:table_size + len(dat.data)] = dat.data
         data[table_size + len(dat.data):offset] = code_bytes
         spans.insert(0, Span(0, bytes(data[:table_size]), None, "object table"))

@@ -66,3 +66,13 @@ def test_a_listing_of_a_method_table_pointing_past_the_image_stays_inside_it():
     for obj in listing.objects.values():
         assert obj.dat_start <= obj.dat_end <= len(image)
     assert "Propeller image" in disassemble_image(image)
+
+
+def test_an_abort_into_a_frame_chain_that_loops_is_a_fault_not_a_hang():
+    """The frame's previous-frame word points at itself and no frame catches: the ROM would unwind for ever."""
+    from spinemu.diagnostics import EmulationError
+
+    src = ("PUB main\n  word[@result - 4] := @result\n  word[@result - 8] := 0\n  abort 1\n")
+    with pytest.raises(EmulationError, match="frame chain that loops") as info:
+        Chip(compile_source(src).binary).run(max_cycles=1_000_000)
+    assert "cog 0" in info.value.message

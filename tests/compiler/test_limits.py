@@ -91,3 +91,11 @@ def test_a_local_at_offset_8000_is_written_as_openspin_writes_it():
 def test_variables_past_32k_are_an_error_not_a_crash():
     with pytest.raises(SpinError, match="too much VAR space"):
         compile_source("VAR\n  long v[100000]\n  word w\nPUB main\n  w := 1\n")
+
+
+@pytest.mark.parametrize("src", ["DAT\n  long 0[17000]\nPUB main\n", "DAT\n  long 0[16384]\nPUB main\n",
+                                 "PUB main | q[255], r[65535], z\n  z := 1\n"])
+def test_objects_and_frames_past_64k_are_errors_not_crashes(src):
+    """OpenSpin wraps such sizes to 16 bits and writes a broken image (a documented deviation)."""
+    with pytest.raises(SpinError, match="exceed the 32 KB hub RAM|take more than 32 KB"):
+        compile_source(src)
