@@ -15,6 +15,7 @@ The public API (see docs/api.md):
   :func:`render_timeline`, :func:`plot_trace`, :func:`disassemble_image` - analysis.
 * :func:`translate_spin`, :func:`run_translated` - Spin to readable Python, and running it
   on the same chip model.
+* :class:`SerialConsole` - a serial terminal on a run's TX/RX pins (``parts=[console]``).
 * :class:`SpinError` - every error about bad input.
 
 Everything but the error and trace types is imported on first use, so
@@ -33,7 +34,7 @@ __version__ = "0.1.0"
 __all__ = [
     "SpinError", "PinTrace", "read_log", "compile_spin", "Chip", "run_spin", "run_bs2",
     "compare_traces", "decode_steps", "compare_stepper_traces", "render_timeline", "plot_trace",
-    "disassemble_image", "translate_spin", "run_translated", "__version__",
+    "disassemble_image", "translate_spin", "run_translated", "SerialConsole", "__version__",
 ]
 
 _LAZY = {
@@ -46,6 +47,7 @@ _LAZY = {
     "disassemble_image": ("spinemu.analysis.disasm", "disassemble_image"),
     "translate_spin": ("spinemu.translate", "translate_file"),
     "run_translated": ("spinemu.translate", "run_translated"),
+    "SerialConsole": ("spinemu.bench", "SerialConsole"),
 }
 
 
@@ -78,7 +80,7 @@ def compile_spin(path, include_dirs=()):
 
 
 def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] = None,
-             compat: str = "spinsim", inputs=None, include_dirs=()):
+             compat: str = "spinsim", inputs=None, include_dirs=(), parts=()):
     """Compile (if ``target`` is a ``.spin`` file) and run a Propeller program.
 
     Args:
@@ -88,6 +90,8 @@ def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] =
             (the silicon's cog load time, lock numbering and hub windows; see docs/timing.md).
         inputs: what undriven pins read (``"pulldown"``, ``"pullup"`` or a stimulus).
         include_dirs: OBJ search folders for a ``.spin`` target.
+        parts: bench parts attached to the chip before the run, e.g. a
+            :class:`SerialConsole` (``console.text`` then holds what the program printed).
 
     Returns:
         The chip's ``RunResult``: ``.trace``, ``.hub``, ``.end_cycle``, ``.reason``,
@@ -106,7 +110,10 @@ def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] =
     limit = cycles
     if seconds is not None:
         limit = int(round(seconds * (ImageHeader.parse(image).clkfreq or FALLBACK_CLOCK_HZ)))
-    return Chip(image, compat=compat, inputs=inputs).run(max_cycles=limit)
+    chip = Chip(image, compat=compat, inputs=inputs)
+    for part in parts:
+        part.attach(chip)
+    return chip.run(max_cycles=limit)
 
 
 def run_bs2(path, *, seconds: float = 10.0, timing: str = "exact", **options):

@@ -13,6 +13,8 @@ Nothing imports this module; it imports the rest of spinemu lazily so that
 from __future__ import annotations
 
 import argparse
+import contextlib
+import math
 import os
 import sys
 import tempfile
@@ -20,6 +22,7 @@ import time
 from typing import Optional, Sequence, TextIO
 
 from . import __version__
+from .cli_console import ConsoleSession, add_decode_parser, console_options, console_wanted, decode_uart_command
 from .diagnostics import SpinError, UsageError
 
 __all__ = ["main", "entry_point", "build_parser"]
@@ -35,8 +38,11 @@ examples:
   spinemu run spin_src/stepper_demo.spin --trace demo.vcd --trace-format vcd
   spinemu compile spin_src/stepper_demo.spin -o demo.binary
   spinemu run spin_src/bs2/stepper_bs2.bs2 --seconds 3   the BASIC Stamp original
+  spinemu run spin_src/examples/serial_echo.spin --baud 9600 --console
+                                                         a serial console on P30/P31: type numbers
   spinemu trace show demo.log --pins 0..4                timeline of pins 0-4
   spinemu trace steps demo.log --pins 1..4               stepper decoder
+  spinemu trace decode uart run.log --pin 30 --baud 9600  serial text on a pin
   spinemu disasm demo.binary                             listing of an image
 
 exit status:
@@ -72,8 +78,6 @@ def _count(text: str) -> int:
 
 
 def _finite_float(text: str, least: float, strict: bool, most: float = float("inf")) -> float:
-    import math
-
     try:
         v = float(text.replace("_", ""))
     except ValueError:
@@ -310,44 +314,57 @@ def cmd_run(args, out: _Out) -> int:
         return _run_pbasic(args, out)
     if args.timing or args.debug_in:
         raise UsageError("--timing and --debug-in apply to BASIC Stamp programs (.bs2) only")
+    if args.console_in_at is not None and not args.console_in:
+        raise UsageError("--console-in-at needs --console-in FILE (the bytes to send)")
     image, source_map, prog = _load_target(args.target, args.include, args.define)
     from .image import FALLBACK_CLOCK_HZ, ImageHeader
 
     clock = ImageHeader.parse(image).clkfreq or FALLBACK_CLOCK_HZ       # the chip's time base too
     limit = _run_limit(args, clock)
+    session = ConsoleSession(args, out, clock) if console_wanted(args) else None
+    parts = [session.console] if session else []
     t0 = time.perf_counter()
-    if args.engine == "python":
-        if kind != "spin":
-            raise UsageError("--engine python needs a .spin source (it translates the source)")
-        from .translate import run_translated
+    with session or contextlib.nullcontext():
+        if args.engine == "python":
+            if kind != "spin":
+                raise UsageError("--engine python needs a .spin source (it translates the source)")
+            from .translate import run_translated
 
-        result = run_translated(args.target, include_dirs=list(args.include or ()), max_cycles=limit,
-                                compat=_compat(args), inputs=_spin_inputs(args, clock))
-    else:
-        from .chip import Chip
-
-        chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map)
-        progress, update = _progress_callback(out, limit, clock, not args.no_progress)
-        if progress is not None:
-            with progress:
-                result = chip.run(max_cycles=limit, progress=update)
+            result = run_translated(args.target, include_dirs=list(args.include or ()), max_cycles=limit,
+                                    compat=_compat(args), inputs=_spin_inputs(args, clock), parts=parts)
         else:
-            result = chip.run(max_cycles=limit)
+            from .chip import Chip
+
+            chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map)
+            for part in parts:
+                part.attach(chip)
+            progress, update = _progress_callback(out, limit, clock, not args.no_progress and not
+                                                  (session and session.shows))
+            if progress is not None:
+                with progress:
+                    result = chip.run(max_cycles=limit, progress=update)
+            else:
+                result = chip.run(max_cycles=limit)
     wall = time.perf_counter() - t0
     _write_trace(args, result.trace)
     if args.dump_hub:
         _write_atomic(args.dump_hub, bytes(result.hub), True)
-    for w in result.warnings:
+    for w in result.warnings + (session.warnings(result.end_cycle) if session else []):
         out.err_console.print(f"warning: {w}", markup=False)
     if not out.quiet:
         started = sum(1 for e in result.cog_events if e[2] == "start")
         stopped = sum(1 for e in result.cog_events if e[2] == "stop")
         sim_s = result.end_cycle / result.trace.clock_hz
-        rows = [("ended", result.reason),
+        reason = result.reason
+        if session and reason == "deadlock":
+            reason += ": the cogs wait on pins nothing will change (input the console does not have)"
+        rows = [("ended", reason),
                 ("cogs", f"{started} started, {stopped} stopped"),
                 ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
         if args.trace:
             rows.append(("trace", f"{args.trace} ({len(result.trace.changes)} changes)"))
+        if session:
+            rows.append(session.summary())
         out.print(_summary_table(result.trace, result.end_cycle, rows))
     return 0
 
@@ -362,6 +379,10 @@ def _run_pbasic(args, out: _Out) -> int:
 
     if args.engine == "python" or args.compat is not None or args.inputs is not None:
         raise UsageError("--engine, --compat and --inputs apply to Spin programs only")
+    if console_wanted(args) or args.console_in_at is not None:
+        raise UsageError("the serial console (--console, --console-out, --console-in, --console-pins, --baud) "
+                         "applies to Propeller programs; a BASIC Stamp program's DEBUG text is printed and "
+                         "--debug-in feeds DEBUGIN")
     if args.cycles is not None:
         raise UsageError("BASIC Stamp runs are limited with --seconds (the BS2 has no system counter)")
     if not os.path.exists(args.target):
@@ -510,6 +531,8 @@ def cmd_trace(args, out: _Out) -> int:
         steps = decode_steps(trace, _pins(args.pins, coils=True))
         out.stdout.write(render_steps(steps, trace.clock_hz, limit=args.limit) + "\n")
         return 0
+    if action == "decode":
+        return decode_uart_command(args, trace, out)
     raise UsageError(f"unknown trace action {action!r}")
 
 
@@ -589,6 +612,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="bytecode: interpret the compiled image (default); python: run the Spin-to-Python translation")
     r.add_argument("--timing", choices=["exact", "realistic"],
                    help="BASIC Stamp only: exact command durations, or with per-instruction interpreter time")
+    console_options(r)
     r.add_argument("--no-progress", action="store_true", help="no progress bar")
     r.add_argument("-q", "--quiet", action="store_true", help="no summary")
     r.set_defaults(func=cmd_run)
@@ -638,6 +662,7 @@ def build_parser() -> argparse.ArgumentParser:
             a.add_argument("--changes", type=_count, default=0, metavar="N", help="also list the first N changes")
         if name == "steps":
             a.add_argument("--limit", type=_count, default=20, metavar="N", help="show the first N steps")
+    add_decode_parser(ts, [clock])
     tr.set_defaults(func=cmd_trace)
 
     s = sub.add_parser("sidebyside", help="compare two traces as stepper step sequences (e.g. BS2 vs Propeller)",
@@ -677,7 +702,7 @@ def _run_command(argv: Optional[Sequence[str]], stdout: TextIO, stderr: TextIO, 
         parser.print_help(stdout)
         return 2
     if args.command == "trace" and not getattr(args, "trace_action", None):
-        stderr.write("spinemu trace: choose an action: compare, show, plot, convert, steps\n")
+        stderr.write("spinemu trace: choose an action: compare, show, plot, convert, steps, decode\n")
         return 2
     out = _Out(stdout, stderr, quiet=getattr(args, "quiet", False))
     try:
@@ -686,7 +711,7 @@ def _run_command(argv: Optional[Sequence[str]], stdout: TextIO, stderr: TextIO, 
         stderr.write(f"spinemu {args.command}: {e.message}\n")
         return 2
     except SpinError as e:
-        stderr.write(_render_error(e) + "\n")
+        stderr.write(_render_error(e, getattr(args, "target", None)) + "\n")
         return e.exit_status
     except OSError as e:
         stderr.write(f"{getattr(e, 'filename', None) or 'spinemu'}: error: {e.strerror or e}\n")
@@ -696,9 +721,18 @@ def _run_command(argv: Optional[Sequence[str]], stdout: TextIO, stderr: TextIO, 
         return 130
 
 
-def _render_error(err: SpinError) -> str:
-    """The error's diagnostics, with paths under the working directory shown relative to it."""
+def _render_error(err: SpinError, target: Optional[str] = None) -> str:
+    """The error's diagnostics, with paths under the working directory shown relative to it.
+
+    An image or run-time error that names no file (an image has no source lines) is about
+    the command's ``target``.
+    """
     from dataclasses import replace
+
+    from .diagnostics import EmulationError, ImageError
+
+    if target and isinstance(err, (ImageError, EmulationError)):
+        err.diagnostics = [replace(d, path=d.path or target) for d in err.diagnostics]
 
     cwd = os.getcwd()
 

@@ -668,9 +668,11 @@ class BlockCompiler:
             b.end = True
             return
         if op == 0x09:                                  # DJNZ
-            v = b.write(b.off - 4, f"({b.peek()} - 1) & 0xFFFFFFFF")
+            v = b.let(f"({b.peek()} - 1) & 0xFFFFFFFF")
+            b.touch(b.off - 4)
             self._terminal_rest(b, op)
             b.emit(f"if {v}:")
+            b.emit(f"{b.slot(b.off - 4)} = {v}", 1)     # written back only when it loops (0 is not)
             b.exit_lines(str(target), 1)
             b.emit(f"return {b.now(T.djnz[(long_, True)])}", 1)
             b.off -= 4

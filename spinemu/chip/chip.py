@@ -7,8 +7,8 @@ and cog 0 starts the ROM's Spin interpreter on the first method.  Time is one
 32-bit system counter (CNT) shared by all cogs; each cog keeps the cycle at
 which it starts its next bytecode, and the scheduler (:mod:`.scheduler`)
 always advances the cog whose next hub access comes first, jumping over time
-in which every cog waits.  Pins are in :mod:`.pins`, the interpreter in
-:mod:`.spin`.
+in which every cog waits.  Pins are in :mod:`.pins`, live pin listeners in
+:mod:`.listen`, the interpreter in :mod:`.spin`.
 
 Two compatibility modes (``compat``):
 
@@ -40,6 +40,7 @@ from ..trace import PinTrace
 from .blocks import HOT as BLOCK_THRESHOLD
 from .cog import PARKED, RUNNING, STOPPED, IDLE_PASM, Cog
 from .control import CogStopped, Reschedule
+from .listen import Listeners
 from .pins import Pins
 from .registers import Registers
 from .scheduler import NEVER, Scheduler
@@ -55,6 +56,8 @@ COMPAT_MODES = ("chip", "spinsim")
 COG_LOAD_CYCLES = 496 * 16 + 16
 _SPINSIM_START_CYCLES = -4          # spinsim: first instruction in the COGINIT's last cycle
 _NEVER = NEVER
+#: run endings after which no pin can change again
+_FINAL_REASONS = ("all cogs stopped", "deadlock", "stalled")
 
 
 @dataclass
@@ -83,7 +86,7 @@ class RunResult:
     stats: dict = field(default_factory=dict)
 
 
-class Chip(Pins, Scheduler):
+class Chip(Pins, Listeners, Scheduler):
     """A Propeller 1 running one image.
 
     Args:
@@ -148,6 +151,7 @@ class Chip(Pins, Scheduler):
         self._handlers = list(self.handlers)      # the real ones, while a preemption is pending
         self._preempt = False
         self.pin_events: list = []          # (cycle, seq, cog, dira, outa, running)
+        self._init_listeners()              # live pin listeners (listen.py)
         self.cog_events: list = []
         self.warnings: list = []
         if not self.header.clkfreq:
@@ -342,6 +346,8 @@ class Chip(Pins, Scheduler):
             for c in self.cogs:
                 if c.state != STOPPED:
                     self.counters.flush(c, end)
+        if self.pin_listeners:      # pins nothing can change any more stay as they are for ever
+            self._deliver_pins(_NEVER if reason in _FINAL_REASONS else end + 1, end + 1)
         wall = time.perf_counter() - wall
         trace = self._build_trace(end)
         per_cog = {c.id: c.bytecodes for c in self.cogs if c.bytecodes}

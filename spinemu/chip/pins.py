@@ -7,6 +7,7 @@ cycle of the interpreter instruction that writes the register + 4; the
 record is sorted and folded into a :class:`spinemu.trace.PinTrace` at the end
 of the run (cogs may run slightly out of time order).  INA reads driven pins
 as driven and the others from the input model (:mod:`spinemu.chip.inputs`).
+Live pin listeners (the bench's view of a run) are in :mod:`.listen`.
 """
 from __future__ import annotations
 

@@ -70,6 +70,7 @@ class Scheduler:
         run = self._run_spin_traced if traced else self._run_plain
         running: list = []
         generic = False
+        listening = bool(self.pin_listeners)
         while True:
             if self._cogs_changed:
                 self._cogs_changed = False
@@ -90,6 +91,13 @@ class Scheduler:
                 elif c2 is None or key < ck2:
                     c2, ck2 = k, key
             ext = self._next_external(limit) if self._pin_waiters else None
+            if listening:
+                now = ck if c is not None else ext
+                if now is not None and now >= self._listen_at:
+                    self._listen(running, ext, now,
+                                 ck + 1 if c is not None else max(self.now, self._ext_seen) + 1)
+                    if self._pin_waiters:       # a listener may have added input changes
+                        ext = self._next_external(limit)
             if ext is not None and (c is None or ext <= c.t):
                 self.now = self._ext_seen = ext         # an input edge or a counter edge
                 self._wake_pin_waiters(ext)
@@ -102,6 +110,8 @@ class Scheduler:
                         self._unpark(p, limit)
                     continue
                 if self._pin_waiters:           # nothing can change the pins they wait on
+                    if listening and self._idle_listen(limit):
+                        continue                # ... unless a pin listener sends something
                     if limit < _NEVER:
                         self.now = limit
                         return "cycle limit"
@@ -126,6 +136,8 @@ class Scheduler:
                     until = limit
             if ext is not None and ext < until:
                 until = ext
+            if listening and until > self._listen_at:
+                until = self._listen_at         # back here in time to tell the pin listeners
             self.now = t
             try:
                 if generic and c.engine.__class__ is not str:

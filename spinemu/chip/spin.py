@@ -287,11 +287,11 @@ def build_handlers(chip, timing: Timing):
         off, long_ = jump_operand(c)
         i = (c.sp - 4) >> 2
         v = (L[i] - 1) & MASK32
-        L[i] = v
         if v:
+            L[i] = v
             c.pc += off
             return T.djnz[(long_, True)]
-        c.sp -= 4
+        c.sp -= 4                   # popped: the count's long keeps its last value (1), as on the chip
         return T.djnz[(long_, False)]
 
     def op_jz(c, op, t):

@@ -18,7 +18,7 @@ from ..trace import PinTrace
 from .compiler import Program
 from .machine import CLOCK_HZ, Machine, StopRun
 from .stimulus import PinStimulus
-from .terminal import screen, stream_text
+from ..bench.terminal import screen, stream_text
 from .timing import Timing, get_timing
 
 __all__ = ["RunResult", "run_program", "DEFAULT_SECONDS", "DEFAULT_MAX_INSTRUCTIONS"]

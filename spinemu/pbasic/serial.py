@@ -9,7 +9,8 @@ SERIN, SEROUT, SHIFTIN, SHIFTOUT pages) and BASIC Stamp Programming Manual
   with even parity, bit 14 inverted polarity, bit 15 open (driven in one
   state only).  Pin 16 is the programming port (the DEBUG terminal).
 * A SEROUT byte is a start bit, 8 data bits LSB first (or 7 + even parity),
-  one stop bit; true mode idles high.  The decoded bytes are kept per pin
+  one stop bit; true mode idles high (the framing is
+  :func:`spinemu.bench.uart.frame_bits`).  The decoded bytes are kept per pin
   next to the waveform (``Machine.serial_out``).
 * Flow control: in true mode the receiver holds Fpin low for "ready", in
   inverted mode high.
@@ -24,6 +25,7 @@ from __future__ import annotations
 from collections import deque
 from typing import Callable, Optional
 
+from ..bench.uart import frame_bits
 from .machine import MASK, Machine, StopRun
 
 __all__ = ["format_number", "make_debug", "make_serout", "make_serin", "make_debugin",
@@ -91,12 +93,8 @@ def _drive(m: Machine, bit: int, level: int, inverted: bool, open_: bool) -> Non
 
 
 def _frame_bits(b: int, seven_e: bool) -> list[int]:
-    if seven_e:
-        data = [(b >> i) & 1 for i in range(7)]
-        data.append(sum(data) & 1)
-    else:
-        data = [(b >> i) & 1 for i in range(8)]
-    return [0] + data + [1]
+    """The bits of one SEROUT frame (8N1, or 7E1 with baudmode bit 13): the bench's UART framing."""
+    return frame_bits(b, data_bits=7, parity="even") if seven_e else frame_bits(b)
 
 
 def _wait_pin(m: Machine, pin: int, level: int, timeout_ms: Optional[int]) -> bool:

@@ -79,8 +79,11 @@ def translate_file(src_path, out_dir, include_dirs=()) -> list[str]:
     return _write(modules, compiled, os.fspath(out_dir))
 
 
-def run_package(package, max_cycles=None, compat: str = "spinsim", inputs=None):
+def run_package(package, max_cycles=None, compat: str = "spinsim", inputs=None, parts=()):
     """Run a package written by :func:`translate_file` (imported, e.g. with :func:`load_package`) on a chip.
+
+    ``parts``: bench parts attached to the chip before the run (e.g. a
+    :class:`spinemu.bench.SerialConsole`).
 
     Returns:
         a :class:`spinemu.chip.RunResult`, as the bytecode engine gives.
@@ -89,10 +92,11 @@ def run_package(package, max_cycles=None, compat: str = "spinsim", inputs=None):
     image_path = os.path.join(os.path.dirname(package.__file__), package.IMAGE)
     with open(image_path, "rb") as fh:
         image = fh.read()
-    return run_class(package.TOP, image, max_cycles=max_cycles, compat=compat, inputs=inputs)
+    return run_class(package.TOP, image, max_cycles=max_cycles, compat=compat, inputs=inputs, parts=parts)
 
 
-def run_translated(src_path, include_dirs=(), max_cycles=None, compat: str = "spinsim", inputs=None):
+def run_translated(src_path, include_dirs=(), max_cycles=None, compat: str = "spinsim", inputs=None,
+                   parts=()):
     """Translate ``src_path`` and run the Python on the chip model.
 
     Args:
@@ -100,6 +104,8 @@ def run_translated(src_path, include_dirs=(), max_cycles=None, compat: str = "sp
         include_dirs: more folders to look for OBJ files in.
         max_cycles: stop at this cycle (``None``: until every cog stopped).
         compat, inputs: as for :class:`spinemu.chip.Chip`.
+        parts: bench parts to attach to the chip (each ``part.attach(chip)``
+            before the run), e.g. a :class:`spinemu.bench.SerialConsole`.
 
     Returns:
         a :class:`spinemu.chip.RunResult` (trace, hub, end cycle, ...).
@@ -110,7 +116,7 @@ def run_translated(src_path, include_dirs=(), max_cycles=None, compat: str = "sp
     try:
         _write(modules, compiled, tmp)
         package = load_package(tmp)
-        return run_package(package, max_cycles=max_cycles, compat=compat, inputs=inputs)
+        return run_package(package, max_cycles=max_cycles, compat=compat, inputs=inputs, parts=parts)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 

@@ -347,8 +347,8 @@ def _children_of(cls):
     return [(k, v) for k, v in vars(cls).items() if isinstance(v, spin.Child)]
 
 
-def run_class(cls, image: bytes, *, max_cycles=None, compat: str = "spinsim", inputs=None):
-    """Run translated top class ``cls`` on a :class:`PythonChip` loaded with ``image``."""
+def run_class(cls, image: bytes, *, max_cycles=None, compat: str = "spinsim", inputs=None, parts=()):
+    """Run translated top class ``cls`` on a :class:`PythonChip` loaded with ``image`` (``parts`` attached first)."""
     from ..image import ImageHeader, load_image
     from .weave import prepare
     prepare(cls)
@@ -359,6 +359,8 @@ def run_class(cls, image: bytes, *, max_cycles=None, compat: str = "spinsim", in
     T = load_timing()
     epilogue = T.reg[(0x3F, 0)]        # the ROM's COGID ($3F $89) before COGSTOP
     chip = PythonChip(image, top, epilogue, compat=compat, inputs=inputs)
+    for part in parts:
+        part.attach(chip)
     RT.final = _NEVER if max_cycles is None else max_cycles
     result = chip.run(max_cycles)
     result.stats["stacks"] = list(chip.engine.stacks)

@@ -157,6 +157,7 @@ def test_djnz_keeps_counting_until_zero(compat):
     m.step()
     m.step()
     assert m.cog.pc == 0x18 + 2                   # fell through, count popped
+    assert m.chip.mem_longs[m.cog.sp >> 2] == 1   # the popped long keeps 1 (spinsim -p hub dump)
 
 
 def test_reg_write_of_outa_and_dira_changes_the_pins_in_the_last_instruction(compat):

@@ -28,7 +28,10 @@ BUDGETS = {"stepper_demo.spin": 120_000_000, "simple_stepper.spin": 60_000_000, 
 DEFAULT_BUDGET = 3_000_000
 
 #: programs the translator does not handle yet, and why
-KNOWN_GAPS: dict = {}
+KNOWN_GAPS: dict = {
+    "loop_count_leftover.spin": "reads an uninitialised local where a finished repeat left its count; "
+                                "the Python engine starts such a local at 0 (docs/translate.md)",
+}
 
 
 def spin_programs() -> list:
