@@ -60,6 +60,7 @@ def plot_trace(trace: PinTrace, pins: Optional[Iterable[int]] = None, start: int
     import matplotlib.pyplot as plt
 
     end = trace.end_cycle if end is None else end
+    end = max(end, start + 1)       # an empty window (a trace of one instant, --end before --start): one cycle
     pins = list(trace.driven_pins() if pins is None else pins)
     scale, unit = _time_unit((end - start) / trace.clock_hz)
     fig, ax = plt.subplots(figsize=(10, 0.6 * len(pins) + 1.2))

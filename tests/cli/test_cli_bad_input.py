@@ -115,3 +115,17 @@ def test_a_device_is_not_read_as_a_file():
 def test_a_folder_as_input_is_an_error_in_the_input(tmp_path):
     code, _, err = run("trace", "show", tmp_path)
     assert code == 1 and "error: cannot read file" in err
+
+
+@pytest.mark.parametrize("window", [[], ["--start", "500", "--end", "100"]])
+def test_a_plot_of_an_empty_window_draws_without_a_python_warning(tmp_path, window):
+    pytest.importorskip("matplotlib")
+    import warnings
+
+    one = tmp_path / "one.log"
+    one.write_text("0 00000001 00000001\n")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        code, _, err = run("trace", "plot", one, "-o", tmp_path / "one.png", *window)
+    assert code == 0, err
+    assert not [w for w in caught if issubclass(w.category, UserWarning)]

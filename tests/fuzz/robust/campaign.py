@@ -12,6 +12,8 @@ command line itself, see :mod:`.cases`).  What counts as a finding:
 ``traceback``  a Python traceback printed although the status is not 70
 ``bad-python`` a module written by ``spinemu translate`` that ``compile()`` rejects
 ``wrong-line`` an error message quoting a source line that is not the line its ``file:line`` names
+``py-warning`` a Python warning (not a deprecation) reached the user: matplotlib's, numpy's...
+``stray-output`` text written to the process's own stdout/stderr instead of the streams ``main`` got
 ``timeout``    the case ran past its time budget (reported apart: slow is not a crash)
 
 Findings are grouped by *signature*: the kind, the exception type and the
@@ -20,14 +22,17 @@ because the runner sets ``SPINEMU_TRACEBACK=1``).
 """
 from __future__ import annotations
 
+import contextlib
 import io
 import os
 import re
 import shutil
 import signal
+import sys
 import tempfile
 import time
 import unicodedata
+import warnings
 from collections import Counter
 from dataclasses import dataclass, field
 from typing import Optional
@@ -37,7 +42,8 @@ from .cases import Case, make_case
 __all__ = ["Finding", "Campaign", "run_case", "run_campaign", "CaseTimeout", "BAD_KINDS"]
 
 #: Finding kinds that fail a campaign (``timeout`` is reported but does not fail it).
-BAD_KINDS = ("internal", "escaped", "status", "silent", "traceback", "bad-python", "wrong-line")
+BAD_KINDS = ("internal", "escaped", "status", "silent", "traceback", "bad-python", "wrong-line", "py-warning",
+             "stray-output")
 
 
 class CaseTimeout(BaseException):
@@ -109,6 +115,8 @@ def _timeout(signum, frame):
 
 
 def _write_files(case: Case, workdir: str) -> None:
+    with open(os.path.join(workdir, "in.txt"), "wb") as fh:     # what --console-in sends, in every case
+        fh.write(b"12\r-7\rhello\r\x00\xff")
     for name, data in case.files.items():
         path = os.path.join(workdir, name)
         if name.endswith("/"):
@@ -211,6 +219,7 @@ def run_case(case: Case, budget_s: float = 20.0, workdir: Optional[str] = None, 
     findings, statuses = [], []
     old_env = os.environ.get("SPINEMU_TRACEBACK")
     os.environ["SPINEMU_TRACEBACK"] = "1"
+    old_stdin, sys.stdin = sys.stdin, io.StringIO()     # --console must not take over a terminal
     # the budget is CPU seconds (ITIMER_PROF: a loaded machine does not make a case "slow"),
     # with five times as many wall-clock seconds for a case that blocks without using the CPU
     use_alarm = budget_s > 0 and hasattr(signal, "setitimer")
@@ -224,15 +233,25 @@ def run_case(case: Case, budget_s: float = 20.0, workdir: Optional[str] = None, 
         for raw in case.commands:
             argv = _argv(raw, workdir)
             out, err = io.StringIO(), io.StringIO()
+            stray = io.StringIO()                     # what bypasses the streams main() was given
             status, kind, detail = None, None, ""
-            try:
-                status = main(argv, out, err)
-            except CaseTimeout:
-                kind, detail = "timeout", f"ran past {budget_s} s"
-            except BaseException as e:  # noqa: BLE001 - that is what the fuzzer looks for
-                import traceback
-                kind, detail = "escaped", "".join(traceback.format_exception(type(e), e, e.__traceback__))
+            with warnings.catch_warnings(record=True) as caught, \
+                    contextlib.redirect_stdout(stray), contextlib.redirect_stderr(stray):
+                warnings.simplefilter("always")
+                try:
+                    status = main(argv, out, err)
+                except CaseTimeout:
+                    kind, detail = "timeout", f"ran past {budget_s} s"
+                except BaseException as e:  # noqa: BLE001 - that is what the fuzzer looks for
+                    import traceback
+                    kind, detail = "escaped", "".join(traceback.format_exception(type(e), e, e.__traceback__))
             text = out.getvalue() + err.getvalue()
+            shown = [w for w in caught if not issubclass(w.category, (DeprecationWarning, PendingDeprecationWarning))]
+            if kind is None and shown:
+                w = shown[0]
+                kind, detail = "py-warning", f"{w.category.__name__}: {w.message} ({w.filename}:{w.lineno})"
+            if kind is None and stray.getvalue().strip():
+                kind, detail = "stray-output", stray.getvalue()[-2000:]
             if kind is None:
                 if status == 70:
                     kind, detail = "internal", err.getvalue()
@@ -250,6 +269,7 @@ def run_case(case: Case, budget_s: float = 20.0, workdir: Optional[str] = None, 
                 show(argv, status, out.getvalue(), err.getvalue())
             if kind:
                 sig = _signature(kind, detail) if kind in ("internal", "escaped", "traceback") else \
+                    f"{kind}: {detail.split(' (')[0][:80]}" if kind == "py-warning" else \
                     f"{kind}: {' '.join(raw[:2])}"
                 findings.append(Finding(kind, case.seed, case.kind, argv, status, sig, detail[-3000:], case.forced))
                 if kind == "timeout":
@@ -266,6 +286,7 @@ def run_case(case: Case, budget_s: float = 20.0, workdir: Optional[str] = None, 
         _stop_timers(use_alarm)
         for sig, handler in old_handlers:
             signal.signal(sig, handler)
+        sys.stdin = old_stdin
         if old_env is None:
             os.environ.pop("SPINEMU_TRACEBACK", None)
         else:
@@ -284,7 +305,6 @@ def _stop_timers(on: bool) -> None:
 
 def _close_figures() -> None:
     """Free matplotlib figures a plot command left open (only if pyplot was imported)."""
-    import sys
     plt = sys.modules.get("matplotlib.pyplot")
     if plt is not None:
         plt.close("all")

@@ -91,7 +91,27 @@ def _run_options(rng: random.Random, spin: bool = True) -> list:
         out += ["--input", _stimulus(rng, 32 if spin else 16)]
     if spin and rng.random() < 0.1:
         out += ["--dump-hub", "{dir}/hub.bin"]
+    if spin and rng.random() < 0.1:
+        out += _console_options(rng)
     return out
+
+
+def _console_options(rng: random.Random) -> list:
+    """The serial console of a Spin run, with odd values now and then."""
+    out = []
+    if rng.random() < 0.5:
+        out += ["--baud", rng.choice(["9600", "115200", "1", "0", "-5", "nan", "1e9", "300", "2000000"])]
+    if rng.random() < 0.4:
+        out += ["--console-out", "{dir}/" + rng.choice(["c.txt", "nodir/c.txt", ""])]
+    if rng.random() < 0.3:
+        out += ["--console-in", "{dir}/" + rng.choice(["in.txt", "missing.txt", ""])]
+        if rng.random() < 0.5:
+            out += ["--console-in-at", rng.choice(["0", "0.001", "-1", "nan", "inf", "1e300"])]
+    if rng.random() < 0.3:
+        out += ["--console-pins", rng.choice(["30,31", "0,1", "31,31", "32,1", "x", "1", "-1,2"])]
+    if rng.random() < 0.2:
+        out.append("--console")
+    return out or ["--console-out", "{dir}/c.txt"]
 
 
 def _stimulus(rng: random.Random, pins: int) -> str:
@@ -309,7 +329,7 @@ def _trace(rng: random.Random, seed: int) -> Case:
         if rng.random() < 0.3 else []  # noqa: E731
     window = lambda: [x for flag in ("--start", "--end") if rng.random() < 0.2  # noqa: E731
                       for x in (flag, rng.choice(["0", "-100", "1000", "99999999999999999999", "5", "x"]))]
-    action = rng.choice(["show", "compare", "convert", "plot", "steps", "sidebyside", "show", "steps"])
+    action = rng.choice(["show", "compare", "convert", "plot", "steps", "sidebyside", "show", "steps", "decode"])
     if action == "compare":
         argv = ["trace", "compare", "{dir}/a.log", "{dir}/b.log"] + clock()
         if rng.random() < 0.3:
@@ -329,6 +349,10 @@ def _trace(rng: random.Random, seed: int) -> Case:
             argv += ["--width", rng.choice(["1", "2", "64", "0", "100000", "-1"])]
         if rng.random() < 0.3:
             argv += ["--changes", rng.choice(["1", "5", "0", "-5", "100000"])]
+    elif action == "decode":
+        argv = ["trace", "decode", "uart", "{dir}/a.log", "--pin", rng.choice(["1", "2", "0", "31", "32", "-1", "x"])]
+        argv += ["--baud", rng.choice(["9600", "1000000", "1", "0", "nan", "1e12", "-3"])] if rng.random() < 0.7 else []
+        argv += [f for f in ("--inverted", "--hold-last", "--frames") if rng.random() < 0.3] + clock() + window()
     elif action == "convert":
         argv = ["trace", "convert", "{dir}/a.log", "-o", "{dir}/" + rng.choice(["a.vcd", "a", "a.log"])] + clock()
     elif action == "plot":
