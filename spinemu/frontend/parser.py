@@ -13,7 +13,7 @@ from .ast import SpinFile
 from .builder import AstBuilder
 from .lalr import Parser, ParseFailure, load_tables
 from .layout import layout
-from .limits import MAX_EXPRESSION_DEPTH, block_nesting_errors, expression_depth_error
+from .limits import MAX_BLOCK_DEPTH, MAX_EXPRESSION_DEPTH, block_nesting_errors, expression_depth_error
 from .lexer import TAB_WIDTH, Token, tokenize, KEYWORDS, _OPERATORS
 from .preprocess import preprocess
 from .source import SourceText, read_source
@@ -27,6 +27,8 @@ for _spelling, _type in _OPERATORS.items():
         _OP_SPELLING.setdefault(_type, _spelling)
 _KEYWORD_SPELLING = {t: w for w, t in KEYWORDS.items() if t == w.upper()}
 _START = {"CON": "con_line", "VAR": "var_line", "OBJ": "obj_line", "DAT": "dat_line"}
+#: tokens that open a block (limits.py); a method with fewer than ten cannot nest ten deep
+_BLOCK_TOKENS = frozenset({"IF", "IFNOT", "REPEAT", "CASE", "LOOKUP"})
 
 
 def _get_tables():
@@ -148,7 +150,8 @@ def parse_text(source: SourceText, defines=()) -> tuple[SpinFile, list]:
         except ParseFailure as exc:
             errors.append(_failure(exc, source, start, tokens))
             return None
-        problems = block_nesting_errors(node) if start == "method" else []
+        opening = sum(1 for t in tokens if t.type in _BLOCK_TOKENS) if start == "method" else 0
+        problems = block_nesting_errors(node) if opening > MAX_BLOCK_DEPTH else []
         if _longest_line(tokens) > MAX_EXPRESSION_DEPTH:
             deep = expression_depth_error(node)
             problems += [deep] if deep else []
