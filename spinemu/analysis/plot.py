@@ -76,7 +76,10 @@ def plot_trace(trace: PinTrace, pins: Optional[Iterable[int]] = None, start: int
     ax.set_yticks([(len(pins) - 1 - r) * 1.5 + 0.5 for r in range(len(pins))])
     ax.set_yticklabels([trace.pin_names.get(p, f"P{p}") for p in pins])
     ax.set_xlabel(f"time ({unit})")
-    ax.set_xlim(start / trace.clock_hz * scale, end / trace.clock_hz * scale)
+    x0, x1 = start / trace.clock_hz * scale, end / trace.clock_hz * scale
+    if not x1 > x0:                 # a window far out (--start 10**20): one cycle is below float precision
+        x1 = x0 + max(abs(x0) * 1e-9, 1e-9)
+    ax.set_xlim(x0, x1)
     if title:
         ax.set_title(title)
     fig.tight_layout()

@@ -230,7 +230,7 @@ def build_handlers(chip, timing: Timing):
         frame6 = c.dcall
         c.dcall = W[frame6 >> 1]
         W[frame6 >> 1] = c.pc & 0xFFFF
-        c.dbase = frame6 + 2
+        c.dbase = (frame6 + 2) & 0xFFFF         # a 16-bit register (a corrupt frame chain can carry it past $FFFF)
         ent = L[((c.pbase + 4 * m) & 0xFFFF) >> 2]
         sp = c.sp + (ent >> 16)
         if sp > 0x8000:

@@ -179,6 +179,9 @@ class MethodCompiler(ExprCompiler):
 
     # ------------------------------------------------------------------ case
     def s_Case(self, node: Case) -> None:
+        if not node.items:      # OpenSpin: "No cases encountered" (at the statement after the case)
+            self.error(msg.CASE_WITHOUT_MATCH, node)
+            return
         code = self.code
         end = Label("case end")
         code.push_address(end, "case end")

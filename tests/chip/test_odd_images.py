@@ -76,3 +76,17 @@ def test_an_abort_into_a_frame_chain_that_loops_is_a_fault_not_a_hang():
     with pytest.raises(EmulationError, match="frame chain that loops") as info:
         Chip(compile_source(src).binary).run(max_cycles=1_000_000)
     assert "cog 0" in info.value.message
+
+
+def test_a_frame_base_past_ffff_is_kept_to_16_bits_as_the_interpreter_keeps_it():
+    """Two bytes of the corrected demo changed (a robustness-fuzzer case): a call then builds its frame
+    from a corrupt chain and carried dbase past $FFFF into a hub word (was ValueError)."""
+    from pathlib import Path
+
+    image = bytearray((Path(__file__).parent.parent / "data" / "article" / "corrected_stepper_demo.binary")
+                      .read_bytes())
+    image[73], image[143] = 0x77, 0xC3
+    image[5] = image_checksum(bytes(image))
+    for blocks in (True, False):
+        result = Chip(bytes(image), compile_blocks=blocks).run(max_cycles=200_000)
+        assert result.end_cycle <= 200_000

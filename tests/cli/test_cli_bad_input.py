@@ -117,7 +117,7 @@ def test_a_folder_as_input_is_an_error_in_the_input(tmp_path):
     assert code == 1 and "error: cannot read file" in err
 
 
-@pytest.mark.parametrize("window", [[], ["--start", "500", "--end", "100"]])
+@pytest.mark.parametrize("window", [[], ["--start", "500", "--end", "100"], ["--start", "99999999999999999999"]])
 def test_a_plot_of_an_empty_window_draws_without_a_python_warning(tmp_path, window):
     pytest.importorskip("matplotlib")
     import warnings

@@ -59,3 +59,10 @@ def test_utf16_without_a_byte_order_mark_is_an_error_with_a_position():
     data = "PUB main\n  outa := 1\n".encode("utf-16-le")
     err = error_of(data.decode("utf-8"))
     assert err.diagnostics[0].line == 1 and err.diagnostics[0].column is not None
+
+
+@pytest.mark.parametrize("src", ["PUB main | x\n  repeat\n    case x\n", "PUB main | x\n  case x\n  x := 1\n"])
+def test_a_case_without_match_lines_is_an_error(src):
+    """OpenSpin: "No cases encountered" (at the statement after the case); spinemu points at the case."""
+    err = error_of(src)
+    assert err.diagnostics[0].message == "case needs at least one match line"

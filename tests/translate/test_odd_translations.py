@@ -81,3 +81,16 @@ def test_an_object_index_outside_the_array_is_a_run_time_fault_naming_the_spin_l
     d = info.value.diagnostics[0]
     assert (d.path, d.line) == ("top.spin", 5)
     assert "object index 2 is outside b[0..1]" in d.message
+
+
+def test_a_block_whose_statements_write_no_line_becomes_pass(tmp_path, monkeypatch):
+    """A repeat whose only statement translates to nothing (here an empty case, let through the compiler)."""
+    from spinemu.compiler import stmts
+
+    original = stmts.MethodCompiler.s_Case
+    monkeypatch.setattr(stmts.MethodCompiler, "s_Case",
+                        lambda self, node: None if not node.items else original(self, node))
+    src = tmp_path / "empty.spin"
+    src.write_text("PUB main | x\n  repeat\n    case x\n")
+    translate.translate_file(str(src), str(tmp_path / "py"))
+    compile_modules(tmp_path / "py")
