@@ -95,6 +95,14 @@ def _mem_op(access: int, size: int, base: str, indexed: bool) -> int:
     return 0x80 | (_SIZE_BITS[size] << 5) | (0x10 if indexed else 0) | (_BASE_BITS[base] << 2) | access
 
 
+def _table_index(index: int) -> int:
+    """A method or object table index for a CALL byte; past 255 the object has more methods and
+    object instances than a table holds, which is reported already: stop compiling this expression."""
+    if index > 0xFF:
+        raise CompileFailure()
+    return index
+
+
 class ExprCompiler:
     """Expression code generation; a MethodCompiler (stmts.py) adds statements.
 
@@ -380,7 +388,7 @@ class ExprCompiler:
             self.code.emit(frame, "frame")
             for a in node.args:
                 self.expr(a)
-            self.code.emit((_OP["CALL"], sym.index), f"call {node.name}")
+            self.code.emit((_OP["CALL"], _table_index(sym.index)), f"call {node.name}")
             return
         if isinstance(node, ObjCall):
             sym = self.obj.symbols.get(key(node.obj))
@@ -399,10 +407,12 @@ class ExprCompiler:
             for a in node.args:
                 self.expr(a)
             if node.index is None:
-                self.code.emit((_OP["CALL_OBJ"], sym.index, index), f"call {node.obj}.{node.method}")
+                self.code.emit((_OP["CALL_OBJ"], _table_index(sym.index), _table_index(index)),
+                               f"call {node.obj}.{node.method}")
             else:
                 self.expr(node.index)
-                self.code.emit((_OP["CALL_OBJ_X"], sym.index, index), f"call {node.obj}[].{node.method}")
+                self.code.emit((_OP["CALL_OBJ_X"], _table_index(sym.index), _table_index(index)),
+                               f"call {node.obj}[].{node.method}")
             return
         self.error(msg.NOT_A_METHOD.format(name="?"), node)
         raise CompileFailure()

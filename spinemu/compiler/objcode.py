@@ -155,6 +155,7 @@ class ObjectCompiler:
                 syms.methods.append(sym)
         instances = []
         index = len(methods) + 1
+        crossing = None         # the OBJ line that takes the table past 255 entries (OpenSpin reports it)
         for decl, child in self.unit.children:
             count = 1 if decl.count is None else self.count_of(decl.count)
             if not 1 <= count <= 255:
@@ -166,8 +167,10 @@ class ObjectCompiler:
             for _ in range(count):
                 instances.append((osym, child))
             index += count
+            if crossing is None and len(methods) + len(instances) > 255:
+                crossing = decl
         if len(methods) + len(instances) > 255:
-            self.error(msg.TOO_MANY_METHODS, spin.objs[-1] if spin.objs else methods[-1])
+            self.error(msg.TOO_MANY_METHODS, crossing or methods[-1])
         var_syms, var_size = layout_vars(spin.vars, self.count_of)
         if var_size > 0x8000:
             self.error(msg.TOO_MUCH_VAR, spin.vars[-1])

@@ -66,3 +66,12 @@ def test_a_case_without_match_lines_is_an_error(src):
     """OpenSpin: "No cases encountered" (at the statement after the case); spinemu points at the case."""
     err = error_of(src)
     assert err.diagnostics[0].message == "case needs at least one match line"
+
+
+def test_an_object_array_past_255_table_entries_is_reported_at_its_line_and_calls_do_not_crash():
+    """OpenSpin: "Limit of 256 subroutines + objects exceeded" on the OBJ line that crosses it."""
+    src = 'OBJ\n  a : "kid"\n  b[255] : "kid"\n  c : "kid"\nPUB main\n  c.f\n  b[1].f\n'
+    with pytest.raises(SpinError) as info:
+        compile_source(src, "top.spin", files={"kid.spin": "PUB f\n"})
+    d = info.value.diagnostics[0]
+    assert d.line == 3 and "at most 255 methods and object instances" in d.message
