@@ -71,16 +71,38 @@ class Diagnostic:
         return ":".join(parts)
 
     def render(self) -> str:
-        """The message, the source line and a caret under the column."""
+        """The message, the source line and a caret under the column.
+
+        A line longer than :data:`SHOWN_CHARS` is shown as the stretch around the
+        column, with ``...`` where it was cut.
+        """
         out = [f"{self.location()}: {self.severity}: {self.message}"]
         if self.source_line is not None and self.column is not None:
-            text = _visible(self.source_line.rstrip("\r\n"))
+            text, column = _window(self.source_line.rstrip("\r\n"), self.column)
             out.append(text)
             # Keep tabs so the caret lines up however the terminal expands them.
-            prefix = "".join("\t" if ch == "\t" else " " for ch in text[: self.column - 1])
-            width = max(1, min(self.length, max(1, len(text) - self.column + 1)))
+            prefix = "".join("\t" if ch == "\t" else " " for ch in text[: column - 1])
+            width = max(1, min(self.length, max(1, len(text) - column + 1)))
             out.append(prefix + "^" + "~" * (width - 1))
         return "\n".join(out)
+
+
+#: Characters of a long source line a diagnostic shows around its column.
+SHOWN_CHARS = 160
+
+
+def _window(line: str, column: int) -> tuple:
+    """``(text to show, column in it)``: the line, or the stretch of a long one around ``column``.
+
+    >>> _window("x" * 500, 300)[0][:5], _window("x" * 500, 300)[1]
+    ('...xx', 84)
+    """
+    if len(line) <= SHOWN_CHARS:
+        return _visible(line), column
+    start = max(0, min(column - 1 - SHOWN_CHARS // 2, len(line) - SHOWN_CHARS))
+    lead = "..." if start else ""
+    tail = "..." if start + SHOWN_CHARS < len(line) else ""
+    return lead + _visible(line[start:start + SHOWN_CHARS]) + tail, column - start + len(lead)
 
 
 def _visible(text: str) -> str:

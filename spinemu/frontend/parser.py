@@ -196,7 +196,8 @@ def parse_text(source: SourceText, defines=()) -> tuple[SpinFile, list]:
                 spin.dat.append(node)
     # a line with a lexical error gets no syntax error on top of it
     bad_lines = {d.line for d in lexed.errors}
-    errors = [d for d in errors if d in lexed.errors or d.line not in bad_lines]
+    lexical = {id(d) for d in lexed.errors}            # by identity: thousands of errors must not go quadratic
+    errors = [d for d in errors if id(d) in lexical or d.line not in bad_lines]
     errors.sort(key=lambda d: (d.line or 0, d.column or 0))
     return spin, errors
 

@@ -75,3 +75,19 @@ def test_an_object_array_past_255_table_entries_is_reported_at_its_line_and_call
         compile_source(src, "top.spin", files={"kid.spin": "PUB f\n"})
     d = info.value.diagnostics[0]
     assert d.line == 3 and "at most 255 methods and object instances" in d.message
+
+
+def test_a_huge_line_full_of_errors_is_reported_quickly_and_shown_around_the_column():
+    """A file whose line ends are U+2028 is one line for Spin: every separator is an error, and
+    each used to quote the whole line (seconds per hundred errors)."""
+    import time
+
+    src = "DAT\n" + "\u2028".join(["        long $0A5, $15A"] * 4000) + "\nPUB main\n"
+    t0 = time.perf_counter()
+    err = error_of(src)
+    text = err.render()
+    assert time.perf_counter() - t0 < 10
+    assert len(err.diagnostics) >= 3999
+    first = text.splitlines()[:3]
+    assert first[0].startswith("odd.spin:2:") and len(first[1]) <= 170
+    assert first[1][len(first[2]) - 1] == "\ufffd"          # the caret is under the separator
