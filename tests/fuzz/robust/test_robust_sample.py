@@ -67,3 +67,19 @@ def test_the_runner_sees_a_wrong_quoted_line(tmp_path):
 def test_the_kinds_are_drawn_in_proportion():
     counts = Counter(make_case(s).kind for s in range(400))
     assert set(counts) == set(KINDS)
+
+
+def test_the_runner_accepts_a_long_line_shown_around_the_column(tmp_path):
+    from spinemu.compiler import compile_source
+    from spinemu.diagnostics import SpinError
+
+    from .campaign import _wrong_source_lines
+
+    src = "PUB main | x\n  x := " + " + ".join(["x"] * 80) + " + y\n"
+    (tmp_path / "a.spin").write_text(src)
+    try:
+        compile_source(src, str(tmp_path / "a.spin"))
+    except SpinError as e:
+        rendered = e.render()
+    assert "..." in rendered.splitlines()[1]
+    assert not _wrong_source_lines(rendered, str(tmp_path))
