@@ -164,7 +164,7 @@ def _visible(text: str) -> str:
 
 def _wrong_source_lines(err: str, workdir: str, trace: bool = False) -> list:
     """Diagnostics in ``err`` about a file of the case whose quoted source line is not that line of the file."""
-    out = []
+    out, files = [], {}             # each file read once: an error list can name it thousands of times
     lines = err.splitlines()
     for i, text in enumerate(lines[:-1]):
         m = _DIAG.match(text)
@@ -173,7 +173,10 @@ def _wrong_source_lines(err: str, workdir: str, trace: bool = False) -> list:
         caret = lines[i + 2] if i + 2 < len(lines) else ""
         if not caret.strip().startswith("^"):
             continue                                  # no source line quoted
-        source = _file_lines(m.group("path"), trace)
+        path = m.group("path")
+        if path not in files:
+            files[path] = _file_lines(path, trace)
+        source = files[path]
         n = int(m.group("line"))
         if source is None or not 1 <= n <= len(source):
             continue
@@ -266,9 +269,10 @@ def run_case(case: Case, budget_s: float = 20.0, workdir: Optional[str] = None, 
                     kind = "silent"
                 elif "Traceback (most recent call last)" in text:
                     kind, detail = "traceback", text
-                elif status == 1 and _wrong_source_lines(err.getvalue(), workdir, raw[0] in ("trace", "sidebyside")):
-                    kind, detail = "wrong-line", "\n".join(
-                        _wrong_source_lines(err.getvalue(), workdir, raw[0] in ("trace", "sidebyside")))
+                elif status == 1:
+                    wrong = _wrong_source_lines(err.getvalue(), workdir, raw[0] in ("trace", "sidebyside"))
+                    if wrong:
+                        kind, detail = "wrong-line", "\n".join(wrong)
             statuses.append(status)
             if show:
                 show(argv, status, out.getvalue(), err.getvalue())
