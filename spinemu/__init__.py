@@ -112,7 +112,7 @@ def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] =
         ``.cog_events``, ``.warnings``.
     """
     from .chip import Chip
-    from .image import ImageHeader, load_image
+    from .image import FALLBACK_CLOCK_HZ, ImageHeader, load_image
 
     labels = None
     if isinstance(target, (bytes, bytearray)):
@@ -128,7 +128,7 @@ def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] =
         image = data                # a whole EEPROM boots whole (data stored past the program included)
     limit = cycles
     if seconds is not None:
-        limit = int(round(seconds * (ImageHeader.parse(image).clkfreq or 80_000_000)))
+        limit = int(round(seconds * (ImageHeader.parse(image).clkfreq or FALLBACK_CLOCK_HZ)))
     chip = Chip(image, compat=compat, inputs=inputs, labels=labels)
     if parts:
         from .bench import Bench

@@ -2,8 +2,11 @@
 
 Each subcommand calls one library function, renders its result with rich and
 sets the exit status: 0 success, 1 bad input (a :class:`SpinError`), 2 usage
-errors.  Library errors are rendered ``file:line:col: error: ...`` with the
-source line and a caret; a Python traceback is never shown for bad input.
+errors, 70 an internal error (a bug in spinemu: any other exception, caught by
+the last-resort guard in :func:`main`).  Library errors are rendered
+``file:line:col: error: ...`` with the source line and a caret; a Python
+traceback is never shown unless asked for (``--traceback`` or
+``SPINEMU_TRACEBACK=1``).
 Nothing imports this module; it imports the rest of spinemu lazily so that
 ``spinemu --help`` starts fast.
 """
@@ -53,27 +56,72 @@ OBJ and DAT file names are looked up in the source's folder, the -L folders, the
 folders in SPINEMU_PATH (separated by '%s') and the Spin library folders of an
 installed Propeller Tool, PropellerIDE or SimpleIDE; a name found only in another
 letter case (a project written on Windows) is used with a warning.
+
+exit status:
+  0   success (trace compare / sidebyside: the traces agree)
+  1   an error in the input (file:line:col: error: ...), or traces that differ
+  2   a usage error (wrong or missing arguments)
+  70  an internal error: a bug in spinemu (--traceback shows where it failed)
 """ % os.pathsep
 
 
 # ----------------------------------------------------------------------------- helpers
-def _positive_int(text: str) -> int:
+def _whole_number(text: str, least: int, what: str) -> int:
+    """An argparse type: a whole number (``1_000``, ``0x10`` allowed) of at least ``least``."""
+    t = text.strip().replace("_", "")
     try:
-        v = int(text.replace("_", ""), 0)
+        if not t.isascii() or len(t) > 40:        # no other scripts' digits, no 5,000-digit numbers
+            raise ValueError
+        v = int(t, 0)
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}")
-    if v <= 0:
-        raise argparse.ArgumentTypeError(f"expected a number above 0, got {text!r}")
+    if v < least:
+        raise argparse.ArgumentTypeError(f"expected {what}, got {text!r}")
     return v
 
 
-def _positive_float(text: str) -> float:
+def _positive_int(text: str) -> int:
+    return _whole_number(text, 1, "a number above 0")
+
+
+def _count(text: str) -> int:
+    """A count or a cycle number: 0 or more."""
+    return _whole_number(text, 0, "a number, 0 or more")
+
+
+def _finite_float(text: str, least: float, strict: bool, most: float = float("inf")) -> float:
     try:
         v = float(text.replace("_", ""))
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected a number, got {text!r}")
-    if not math.isfinite(v) or v <= 0:
-        raise argparse.ArgumentTypeError(f"expected a number above 0, got {text!r}")
+    if not math.isfinite(v):
+        raise argparse.ArgumentTypeError(f"expected a finite number, got {text!r}")
+    if v < least or (strict and v == least):
+        raise argparse.ArgumentTypeError(f"expected a number {'above' if strict else 'of at least'} {least:g}, "
+                                         f"got {text!r}")
+    if v > most:
+        raise argparse.ArgumentTypeError(f"expected a number of at most {most:g}, got {text!r}")
+    return v
+
+
+#: The longest time a command line names (``--seconds``, ``--input`` times): about 32 years.
+MAX_SECONDS = 1e9
+
+
+def _positive_float(text: str) -> float:
+    """Seconds of simulated time: above 0, at most :data:`MAX_SECONDS`."""
+    return _finite_float(text, 0.0, strict=True, most=MAX_SECONDS)
+
+
+def _fraction(text: str) -> float:
+    """A relative error: finite, 0 or more."""
+    return _finite_float(text, 0.0, strict=False)
+
+
+def _width(text: str) -> int:
+    v = _positive_int(text)
+    if v > 1000:
+        raise argparse.ArgumentTypeError(f"expected at most 1000 columns, got {text!r}")
     return v
 
 
@@ -95,6 +143,9 @@ def _write_atomic(path: str, data, binary: bool) -> None:
 
 
 def _read_bytes(path: str) -> bytes:
+    if os.path.exists(path) and not os.path.isfile(path) and not os.path.isdir(path):
+        # a device or a FIFO: /dev/zero would never end, a FIFO would wait for a writer
+        raise SpinError("cannot read file: not a regular file", path=path)
     try:
         with open(path, "rb") as f:
             return f.read()
@@ -251,9 +302,9 @@ def cmd_run(args, out: _Out) -> int:
         raise UsageError("--console-in-at needs --console-in FILE (the bytes to send)")
     image, source_map, prog = _load_target(args.target, args.include, args.define)
     _print_hints(out, prog)
-    from .image import ImageHeader, to_eeprom
+    from .image import FALLBACK_CLOCK_HZ, ImageHeader, to_eeprom
 
-    clock = ImageHeader.parse(image).clkfreq or CLOCK_DEFAULT
+    clock = ImageHeader.parse(image).clkfreq or FALLBACK_CLOCK_HZ       # the chip's time base too
     limit = _run_limit(args, clock)
     session = ConsoleSession(args, out, clock, live_text=not args.view) if console_wanted(args) else None
     raw = _read_bytes(args.target) if kind == "image" else None
@@ -490,15 +541,34 @@ def _load_trace(path: str, clock_hz: int):
         raise SpinError(e.message, path=path, line=e.line, column=1, source_line=e.text)
 
 
-def _pins(spec: Optional[str]):
+def _pins(spec: Optional[str], option: str = "--pins", coils: bool = False):
+    """The pins of a ``--pins`` spec; ``coils``: exactly four different pins (a stepper's coils)."""
     if spec is None:
         return None
     from .analysis.view import parse_pins
 
     try:
-        return parse_pins(spec)
+        pins = parse_pins(spec)
     except ValueError as e:
-        raise UsageError(str(e))
+        raise UsageError(f"{option}: {e}")
+    if coils and (len(pins) != 4 or len(set(pins)) != 4):
+        raise UsageError(f"{option}: a stepper has four coil pins (four different pins in table order, "
+                         f"e.g. 1..4), got {spec!r}")
+    return pins
+
+
+def _plot_path(path: str) -> str:
+    """``path`` if matplotlib can write a plot in the format its extension names."""
+    try:
+        from .analysis.plot import plot_formats
+        formats = plot_formats()
+    except ImportError:
+        raise SpinError("trace plot needs matplotlib: pip install 'spinemu[plot]'")
+    ext = os.path.splitext(path)[1].lower().lstrip(".")
+    if ext not in formats:
+        raise UsageError(f"-o: cannot tell the image format of '{path}'; the extension must be one of "
+                         + ", ".join("." + f for f in sorted(formats)))
+    return path
 
 
 def cmd_trace(args, out: _Out) -> int:
@@ -510,6 +580,8 @@ def cmd_trace(args, out: _Out) -> int:
         result = compare_traces(ref, cand, until=args.until, slack=args.slack, tolerance=args.tolerance)
         out.stdout.write(result.render() + "\n")
         return 0 if result.passed else 1
+    if action == "plot":
+        _plot_path(args.output)
     trace = _load_trace(args.file, args.clock)
     start = args.start or 0
     end = args.end if args.end is not None else trace.end_cycle
@@ -527,7 +599,9 @@ def cmd_trace(args, out: _Out) -> int:
     if action == "plot":
         from .analysis.plot import plot_trace
 
-        plot_trace(trace, _pins(args.pins), start, end, path=args.output, title=os.path.basename(args.file))
+        fig = plot_trace(trace, _pins(args.pins), start, end, path=args.output, title=os.path.basename(args.file))
+        import matplotlib.pyplot as plt
+        plt.close(fig)
         out.print(f"{args.file} -> {args.output}")
         return 0
     if action == "steps":
@@ -579,7 +653,8 @@ def cmd_sidebyside(args, out: _Out) -> int:
     left = _load_trace(args.left, args.left_clock)
     right = _load_trace(args.right, args.right_clock)
     names = (os.path.basename(args.left), os.path.basename(args.right))
-    report = compare_stepper_traces(left, _pins(args.left_pins), right, _pins(args.right_pins),
+    report = compare_stepper_traces(left, _pins(args.left_pins, "--left-pins", coils=True), right,
+                                    _pins(args.right_pins, "--right-pins", coils=True),
                                     steps=args.steps, names=names)
     out.stdout.write(report.render() + "\n")
     return 0 if report.same_sequence else 1
@@ -613,6 +688,9 @@ def build_parser() -> argparse.ArgumentParser:
         description="Compile, run, trace and translate Propeller 1 Spin programs; run BASIC Stamp 2 PBASIC.",
         epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--version", action="version", version=f"spinemu {__version__}")
+    p.add_argument("--traceback", action="store_true",
+                   help="on an internal error (exit status 70), print the Python traceback "
+                        "(same as the environment variable SPINEMU_TRACEBACK=1)")
     sub = p.add_subparsers(dest="command", metavar="COMMAND")
 
     c = sub.add_parser("compile", help="compile Spin to a Propeller image (byte-identical with OpenSpin)",
@@ -698,8 +776,8 @@ def build_parser() -> argparse.ArgumentParser:
     tc.add_argument("reference")
     tc.add_argument("candidate")
     tc.add_argument("--until", type=_positive_int, metavar="CYCLE", help="ignore changes after this cycle")
-    tc.add_argument("--tolerance", type=float, default=0.005, help="worst timing error to pass (default 0.005)")
-    tc.add_argument("--slack", type=int, default=16_000, help="cycles of fixed offset forgiven (default 16000)")
+    tc.add_argument("--tolerance", type=_fraction, default=0.005, help="worst timing error to pass (default 0.005)")
+    tc.add_argument("--slack", type=_count, default=16_000, help="cycles of fixed offset forgiven (default 16000)")
     for name, help_ in (("show", "timeline of the pins in the terminal"), ("plot", "waveform plot to an image file"),
                         ("convert", "convert a log to VCD"),
                         ("steps", "decode stepper coil patterns or step/dir pulses into steps")):
@@ -710,17 +788,17 @@ def build_parser() -> argparse.ArgumentParser:
         if name != "convert":
             a.add_argument("--pins", metavar="SPEC", help="pins, e.g. 0..4 or 4..7,0" +
                            (" (the coils, in table order)" if name == "steps" else ""))
-        a.add_argument("--start", type=int, metavar="CYCLE")
-        a.add_argument("--end", type=int, metavar="CYCLE")
+        a.add_argument("--start", type=_count, metavar="CYCLE")
+        a.add_argument("--end", type=_count, metavar="CYCLE")
         if name == "show":
-            a.add_argument("--width", type=_positive_int, default=64, help="columns of the timeline")
-            a.add_argument("--changes", type=int, default=0, metavar="N", help="also list the first N changes")
+            a.add_argument("--width", type=_width, default=64, help="columns of the timeline (1..1000)")
+            a.add_argument("--changes", type=_count, default=0, metavar="N", help="also list the first N changes")
         if name == "steps":
             a.add_argument("--step-dir", metavar="STEP,DIR",
                            help="decode a step/direction driver instead: its step and dir pins, e.g. 0,1 "
                                 "(a step per high pulse of at least 1 us, forward while DIR is high)")
-            a.add_argument("--limit", type=int, default=20, metavar="N", help="show the first N steps")
-            a.add_argument("--segments", type=int, default=40, metavar="N",
+            a.add_argument("--limit", type=_count, default=20, metavar="N", help="show the first N steps")
+            a.add_argument("--segments", type=_count, default=40, metavar="N",
                            help="show the first N segments (runs at one speed; default 40)")
             a.add_argument("--pull-in", type=_positive_float, metavar="RATE",
                            help="run the steps through the motor model with this pull-in rate (steps/s) "
@@ -747,14 +825,11 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 # ----------------------------------------------------------------------------- entry
-def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
-         stderr: Optional[TextIO] = None) -> int:
-    """Run the command line ``argv`` and return the exit status.
+def _run_command(argv: Optional[Sequence[str]], stdout: TextIO, stderr: TextIO, state: dict) -> int:
+    """Parse ``argv`` and run its command; expected errors become statuses 1 and 2.
 
-    Tests call this in-process with their own streams.
+    ``state`` receives the command's name as soon as it is known (for the guard's message).
     """
-    stdout = stdout or sys.stdout
-    stderr = stderr or sys.stderr
     parser = build_parser()
     try:
         old = sys.stdout, sys.stderr
@@ -765,6 +840,9 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
             sys.stdout, sys.stderr = old
     except SystemExit as e:
         return int(e.code or 0)
+    state["command"] = getattr(args, "command", None)
+    if getattr(args, "trace_action", None):
+        state["command"] += " " + args.trace_action
     if not getattr(args, "command", None):
         parser.print_help(stdout)
         return 2
@@ -778,7 +856,7 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
         stderr.write(f"spinemu {args.command}: {e.message}\n")
         return 2
     except SpinError as e:
-        stderr.write(_render_error(e) + "\n")
+        stderr.write(_render_error(e, getattr(args, "target", None)) + "\n")
         return e.exit_status
     except OSError as e:
         stderr.write(f"{getattr(e, 'filename', None) or 'spinemu'}: error: {e.strerror or e}\n")
@@ -788,8 +866,18 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
         return 130
 
 
-def _render_error(err: SpinError) -> str:
-    """The error's diagnostics, with paths under the working directory shown relative to it."""
+def _render_error(err: SpinError, target: Optional[str] = None) -> str:
+    """The error's diagnostics, with paths under the working directory shown relative to it.
+
+    An image or run-time error that names no file (an image has no source lines) is about
+    the command's ``target``.
+    """
+    from dataclasses import replace
+
+    from .diagnostics import EmulationError, ImageError
+
+    if target and isinstance(err, (ImageError, EmulationError)):
+        err.diagnostics = [replace(d, path=d.path or target) for d in err.diagnostics]
     return "\n".join(_render_error_diagnostic(d) for d in err.diagnostics)
 
 
@@ -806,6 +894,55 @@ def _render_error_diagnostic(d) -> str:
     from dataclasses import replace
 
     return replace(d, path=_short_path(d.path)).render()
+
+
+# ----------------------------------------------------------------------------- last-resort guard
+#: Exit status of an internal error (BSD sysexits EX_SOFTWARE): never a status bad input gives.
+EXIT_INTERNAL = 70
+TRACEBACK_ENV = "SPINEMU_TRACEBACK"
+_REPORT_HINT = ("this is a bug in spinemu, not in your input; please report it with the command line and "
+                "the input files")
+
+
+def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
+         stderr: Optional[TextIO] = None) -> int:
+    """Run the command line ``argv`` and return the exit status.
+
+    0: success; 1: an error in the input (rendered ``file:line:col: error: ...``);
+    2: a usage error; 70: an internal error.  Any exception other than the
+    expected ones is a bug: it is reported as ``spinemu COMMAND: internal error:
+    ...`` with a hint to report it, the traceback only with ``--traceback`` (before
+    the command) or the environment variable ``SPINEMU_TRACEBACK=1``.
+    Tests call this in-process with their own streams.
+    """
+    stdout = stdout or sys.stdout
+    stderr = stderr or sys.stderr
+    argv = list(sys.argv[1:] if argv is None else argv)
+    state: dict = {"command": None}
+    try:
+        return _run_command(argv, stdout, stderr, state)
+    except Exception as e:  # noqa: BLE001 - the last resort: nothing else may escape as a traceback
+        return _internal_error(e, argv, state.get("command"), stderr)
+
+
+def _internal_error(err: BaseException, argv: Sequence[str], command: Optional[str], stderr: TextIO) -> int:
+    """Report an unexpected exception (a bug) and return :data:`EXIT_INTERNAL`."""
+    import traceback
+
+    what = f"spinemu {command}" if command else "spinemu"
+    cls = type(err)
+    name = cls.__qualname__ if cls.__module__ == "builtins" else f"{cls.__module__}.{cls.__qualname__}"
+    detail = f"{name}: {err}" if str(err) else name
+    show = "--traceback" in argv or os.environ.get(TRACEBACK_ENV, "") not in ("", "0")
+    try:
+        if show:
+            stderr.write("".join(traceback.format_exception(type(err), err, err.__traceback__)))
+        stderr.write(f"{what}: internal error: {detail}\n{what}: {_REPORT_HINT}"
+                     + ("" if show else f" (run with --traceback or {TRACEBACK_ENV}=1 to see where it failed)")
+                     + "\n")
+    except Exception:  # noqa: BLE001 - a broken stderr must not hide the status
+        pass
+    return EXIT_INTERNAL
 
 
 def entry_point() -> None:

@@ -32,13 +32,13 @@ def cmd_profile(args, out) -> int:
     """``spinemu profile PROG``: cycles per line and method per cog (spinemu.profiler)."""
     cli = _cli()
     from .chip import Chip
-    from .image import ImageHeader
+    from .image import FALLBACK_CLOCK_HZ, ImageHeader
 
     if cli._kind(args.target) == "pbasic":
         raise UsageError("the profiler runs Propeller programs (.spin, .binary, .eeprom)")
     image, source_map, prog = cli._load_target(args.target, args.include, args.define)
     _print_hints(out, prog)
-    clock = ImageHeader.parse(image).clkfreq or cli.CLOCK_DEFAULT
+    clock = ImageHeader.parse(image).clkfreq or FALLBACK_CLOCK_HZ
     chip = Chip(image, compat=cli._compat(args), inputs=cli._spin_inputs(args, clock), source_map=source_map,
                 debug_info=prog.debug_info() if prog is not None else None, warn=False)
     profiler = _attach_profiler(chip, prog)

@@ -19,6 +19,8 @@ STANDARD_OBJECT_HINT = ("'{name}' is an object of the Propeller Tool's library (
 AMBIGUOUS_FILE = ("'{name}' matches several files that differ only in letter case in {folder}: {candidates}; "
                   "spell the name exactly")
 NAME_IN_OTHER_CASE = "'{name}' is spelled '{actual}' on disk ({folder}); using it, as the Propeller Tool on Windows would"
+
+DAT_FILE_TOO_BIG = "data file '{name}' is larger than the {size}-byte hub RAM"
 OBJECT_RECURSION = "object '{name}' includes itself"
 
 # ----------------------------------------------------------------------------- lexer
@@ -27,7 +29,7 @@ UNTERMINATED_DOC = "the '{{{{' comment opened on line {line} is never closed wit
 STRAY_CLOSE_BRACE = "'}' without a '{' to open a comment"
 UNTERMINATED_STRING = "this string has no closing '\"'"
 BAD_NUMBER = "'{text}' is not a valid number"
-BAD_CHARACTER = "unexpected character '{ch}'"
+BAD_CHARACTER = "unexpected character {ch}"
 DESIGNATOR_NOT_FIRST = "'{word}' starts a section and must be in the first column"
 HERE_OUTSIDE_DAT = "'$' (the current address) can only be used in a DAT section"
 LOCAL_LABEL_OUTSIDE_DAT = "':{name}' is a DAT local label; Spin code cannot use it"
@@ -122,7 +124,13 @@ STRING_NOT_ALLOWED = "string() is not allowed here (this expression is compiled 
 OTHER_NOT_LAST = "'other' must be the last case"
 LOOKUP_EMPTY = "lookup needs at least one value"
 CASE_WITHOUT_MATCH = "case needs at least one match line"
+TOO_MANY_NESTED_BLOCKS = ("blocks nested too deeply: Spin allows {limit} levels of if, repeat, case and "
+                          "lookup/lookdown (OpenSpin: 'Limit of 8 nested blocks exceeded')")
+EXPRESSION_TOO_DEEP = ("expression nested too deeply: spinemu compiles up to {limit} levels (parentheses, "
+                       "operators); split it into several statements or constants")
 TOO_MANY_PARAMS = "a method can have at most 255 parameters and locals"
+LOCALS_TOO_BIG = ("the result, parameters and locals take more than 32 KB "
+                  "(OpenSpin: 'Limit of 4096 local variables exceeded')")
 FILE_TOO_BIG = "the program, its variables and its stack exceed the 32 KB hub RAM by {longs} longs"
 STACK_FREE_TOO_BIG = "_stack and _free must add up to less than 8192 longs"
 TOO_MUCH_VAR = "too much VAR space (more than 32 KB)"

@@ -13,7 +13,7 @@ from typing import Iterable, Optional
 
 from ..trace import PinTrace
 
-__all__ = ["plot_trace", "plot_motion"]
+__all__ = ["plot_trace", "plot_motion", "plot_formats"]
 
 
 def _segments(trace: PinTrace, pin: int, start: int, end: int):
@@ -33,6 +33,13 @@ def _segments(trace: PinTrace, pin: int, start: int, end: int):
             t, level = c, new
     runs.append((t, end, level))
     return runs
+
+
+def plot_formats() -> set:
+    """The file extensions (without the dot) matplotlib can save a figure as: png, svg, pdf, ..."""
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    return set(FigureCanvasBase.get_supported_filetypes())
 
 
 def plot_trace(trace: PinTrace, pins: Optional[Iterable[int]] = None, start: int = 0,
@@ -56,6 +63,7 @@ def plot_trace(trace: PinTrace, pins: Optional[Iterable[int]] = None, start: int
     import matplotlib.pyplot as plt
 
     end = trace.end_cycle if end is None else end
+    end = max(end, start + 1)       # an empty window (a trace of one instant, --end before --start): one cycle
     pins = list(trace.driven_pins() if pins is None else pins)
     scale, unit = _time_unit((end - start) / trace.clock_hz)
     fig, ax = plt.subplots(figsize=(10, 0.6 * len(pins) + 1.2))
@@ -71,7 +79,10 @@ def plot_trace(trace: PinTrace, pins: Optional[Iterable[int]] = None, start: int
     ax.set_yticks([(len(pins) - 1 - r) * 1.5 + 0.5 for r in range(len(pins))])
     ax.set_yticklabels([trace.pin_names.get(p, f"P{p}") for p in pins])
     ax.set_xlabel(f"time ({unit})")
-    ax.set_xlim(start / trace.clock_hz * scale, end / trace.clock_hz * scale)
+    x0, x1 = start / trace.clock_hz * scale, end / trace.clock_hz * scale
+    if not x1 > x0:                 # a window far out (--start 10**20): one cycle is below float precision
+        x1 = x0 + max(abs(x0) * 1e-9, 1e-9)
+    ax.set_xlim(x0, x1)
     if title:
         ax.set_title(title)
     fig.tight_layout()

@@ -242,11 +242,16 @@ class InputSpecError(ValueError):
     """A malformed ``--input`` text; the message says what was expected."""
 
 
+#: The latest time a stimulus step may name: about 32 years (any later time is never reached).
+MAX_SECONDS = 1e9
+
+
 def parse_input_spec(text: str) -> dict:
     """Read an input stimulus as written on the command line, for any engine.
 
     ``"P3=1"`` holds P3 high; ``"5=0@0,1@0.25"`` sets P5 low at 0 s and high
-    at 0.25 s; several pins are separated by ``;``.  Times are seconds.
+    at 0.25 s; several pins are separated by ``;``.  Times are seconds, 0 to
+    :data:`MAX_SECONDS`; levels are 0 or 1.
 
     Returns:
         ``{pin: level}`` or ``{pin: [(seconds, level), ...]}`` (the ``spec`` of
@@ -275,7 +280,7 @@ def parse_input_spec(text: str) -> dict:
             for item in rest.split(","):
                 lv, at, t = item.partition("@")
                 seconds = float(t)
-                if not at or not math.isfinite(seconds) or seconds < 0:
+                if not at or not math.isfinite(seconds) or not 0 <= seconds <= MAX_SECONDS:
                     raise ValueError
                 steps.append((seconds, _level(lv)))
             out[pin_n] = steps

@@ -770,7 +770,7 @@ class BlockCompiler:
             b.emit("c.vbase = vbn")
         b.emit("c.dcall = W[f6 >> 1]")
         b.emit(f"W[f6 >> 1] = {ret}")
-        b.emit("c.dbase = f6 + 2")
+        b.emit("c.dbase = (f6 + 2) & 0xFFFF")
         b.emit("full = (pbh << 16 | pb) + ent")
         b.emit("c.pc = full & 0xFFFF")
         b.emit("c.pc_hi = (full >> 16) & 0xFFFF")

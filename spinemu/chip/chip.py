@@ -37,7 +37,7 @@ from typing import Callable, Optional
 
 from ..diagnostics import EmulationError
 from ..bench.inputs import make_input_model
-from ..image import BOOT_FRAME, HUB_SIZE, ImageHeader, load_image
+from ..image import BOOT_FRAME, FALLBACK_CLOCK_HZ, HUB_SIZE, ImageHeader, load_image
 from ..trace import PinTrace
 from .blocks import HOT as BLOCK_THRESHOLD
 from .cog import PARKED, PIN_WAIT, RUNNING, STOPPED, Cog
@@ -176,7 +176,7 @@ class Chip(Pins, Listeners, Scheduler):
         self.lock_used = [False] * 8
         if self.spinsim:
             self.lock_used[0] = True        # spinsim keeps lock 0 for itself
-        self.clock_hz = self.header.clkfreq
+        self.clock_hz = self.header.clkfreq or FALLBACK_CLOCK_HZ     # the time base of the trace
         from .counters import Counters
         from .pinfold import PinFold
         self.counters = Counters(self)
@@ -215,6 +215,9 @@ class Chip(Pins, Listeners, Scheduler):
         self._drives = None                 # the drive history bench parts read (drives.py), on first use
         self.cog_events: list = []
         self.warnings: list = []
+        if not self.header.clkfreq:
+            self.warnings.append(f"the image's header gives a clock of 0 Hz; times are counted at "
+                                 f"{FALLBACK_CLOCK_HZ:,} Hz (RCFAST)")
         self._seq = 0
         self._started = False
         self._booted = False

@@ -234,7 +234,7 @@ def build_handlers(chip, timing: Timing):
         frame6 = c.dcall
         c.dcall = W[frame6 >> 1]
         W[frame6 >> 1] = c.pc & 0xFFFF
-        c.dbase = frame6 + 2
+        c.dbase = (frame6 + 2) & 0xFFFF         # a 16-bit register (a corrupt frame chain can carry it past $FFFF)
         ent = L[((c.pbase + 4 * m) & 0xFFFF) >> 2]
         sp = c.sp + (ent >> 16)
         if sp > c.stack_end:
@@ -565,6 +565,7 @@ def build_handlers(chip, timing: Timing):
             value = L[c.dbase >> 2]
         abort = op < 0x32
         frames = 0
+        at = c.pc - 1
         while True:
             d = c.dbase
             c.pc = W[(d - 2) >> 1]
@@ -578,6 +579,9 @@ def build_handlers(chip, timing: Timing):
             frames += 1
             if not abort or flags & 2:
                 break
+            if frames > 0x2000:     # more frames than 64 KB holds: the chain loops, the ROM would search for ever
+                raise chip.fault(c, at, "ABORT found no frame to catch it in a frame chain that loops "
+                                          "(a corrupt stack): the interpreter would unwind for ever")
         if not flags & 1:
             push(c, value)
         return T.returns(op, frames, not flags & 1)

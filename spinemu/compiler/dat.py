@@ -38,6 +38,7 @@ from ..diagnostics import Diagnostic
 from ..frontend.constants import Const, ConstError, NotConstant, evaluate, to_signed
 from ..frontend.objects import not_found_message
 from ..frontend.search import AmbiguousName
+from ..image import HUB_SIZE as HUB_BYTES
 
 __all__ = ["DatSymbol", "DatResult", "assemble_dat"]
 
@@ -287,9 +288,13 @@ class _Assembler:
                                                   self.unit.spin.source.line(pos.line), "warning"))
             try:
                 with open(found.path, "rb") as fh:
-                    data = fh.read()
+                    data = fh.read(HUB_BYTES + 1)   # more than the hub holds cannot fit in any image
+                if len(data) > HUB_BYTES:
+                    self.report(msg.DAT_FILE_TOO_BIG.format(name=body.filename, size=HUB_BYTES), body)
+                    data = b""
             except OSError:
                 self.report(msg.DAT_FILE_NOT_FOUND.format(name=body.filename, where=found.path), body)
+                data = b""
         self.file_cache[body.filename] = data
         return data
 

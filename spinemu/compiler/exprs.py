@@ -104,6 +104,14 @@ def _mem_op(access: int, size: int, base: str, indexed: bool) -> int:
     return 0x80 | (_SIZE_BITS[size] << 5) | (0x10 if indexed else 0) | (_BASE_BITS[base] << 2) | access
 
 
+def _table_index(index: int) -> int:
+    """A method or object table index for a CALL byte; past 255 the object has more methods and
+    object instances than a table holds, which is reported already: stop compiling this expression."""
+    if index > 0xFF:
+        raise CompileFailure()
+    return index
+
+
 class ExprCompiler:
     """Expression code generation; a MethodCompiler (stmts.py) adds statements.
 
@@ -342,7 +350,10 @@ class ExprCompiler:
             self.code.emit((0x40 | (0x20 if base == "LOC" else 0) | offset | access),
                            getattr(name_node, "name", "result"))
             return
-        self.code.emit(bytes((_mem_op(access, size, base, index is not None),)) + encode_unsigned(offset),
+        # Past $7FFF only a local at exactly $8000 (OpenSpin writes it as $80 $00, offset 0 on the chip)
+        # or an object already reported too big (VAR or DAT over 32 KB): keep 15 bits, as OpenSpin does.
+        operand = encode_unsigned(offset & 0x7FFF, force_long=offset > 0x7F)
+        self.code.emit(bytes((_mem_op(access, size, base, index is not None),)) + operand,
                        getattr(name_node, "name", "result"))
 
     def undefined(self, name: str, node) -> None:
@@ -412,7 +423,7 @@ class ExprCompiler:
             self.code.emit(frame, "frame")
             for a in node.args:
                 self.expr(a)
-            self.code.emit((_OP["CALL"], sym.index), f"call {node.name}")
+            self.code.emit((_OP["CALL"], _table_index(sym.index)), f"call {node.name}")
             return
         if isinstance(node, ObjCall):
             sym = self.obj.symbols.get(key(node.obj))
@@ -435,11 +446,12 @@ class ExprCompiler:
                 for a in node.args:
                     self.expr(a)
             if node.index is None:
-                self.code.emit((_OP["CALL_OBJ"], sym.index, index), f"call {node.obj}.{node.method}")
+                self.code.emit((_OP["CALL_OBJ"], _table_index(sym.index), _table_index(index)),
+                               f"call {node.obj}.{node.method}")
             else:
                 with self.string_part(context, "target"):
                     self.expr(node.index)
-                self.code.emit((_OP["CALL_OBJ_X"], sym.index, index), f"call {node.obj}[].{node.method}")
+                self.code.emit((_OP["CALL_OBJ_X"], _table_index(sym.index), _table_index(index)), f"call {node.obj}[].{node.method}")
             return
         self.error(msg.NOT_A_METHOD.format(name="?"), node)
         raise CompileFailure()

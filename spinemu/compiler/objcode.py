@@ -167,6 +167,7 @@ class ObjectCompiler:
                 syms.methods.append(sym)
         instances = []
         index = len(methods) + 1
+        crossing = None         # the OBJ line that takes the table past 255 entries (OpenSpin reports it)
         for decl, child in self.unit.children:
             count = 1 if decl.count is None else self.count_of(decl.count)
             if not 1 <= count <= 255:
@@ -178,8 +179,10 @@ class ObjectCompiler:
             for _ in range(count):
                 instances.append((osym, child))
             index += count
+            if crossing is None and len(methods) + len(instances) > 255:
+                crossing = decl
         if len(methods) + len(instances) > 255:
-            self.error(msg.TOO_MANY_METHODS, spin.objs[-1] if spin.objs else methods[-1])
+            self.error(msg.TOO_MANY_METHODS, crossing or methods[-1])
         var_syms, var_size = layout_vars(spin.vars, self.count_of)
         if var_size > 0x8000:
             self.error(msg.TOO_MUCH_VAR, spin.vars[-1])
@@ -217,12 +220,14 @@ class ObjectCompiler:
             offset = end
         size = (offset + 3) & ~3
         data = bytearray(size)
-        data[0:2] = size.to_bytes(2, "little")
-        data[2] = len(methods) + 1
-        data[3] = len(instances)
+        # A word past $FFFF (an object or a frame over 64 KB) is already an error (here, or in the
+        # memory check after linking); the table is made anyway, as the other errors are collected.
+        data[0:2] = (size & 0xFFFF).to_bytes(2, "little")
+        data[2] = (len(methods) + 1) & 0xFF
+        data[3] = len(instances) & 0xFF
         for i, info in enumerate(infos):
-            data[4 + 4 * i: 8 + 4 * i] = info.offset.to_bytes(2, "little") + \
-                info.locals_size.to_bytes(2, "little")
+            data[4 + 4 * i: 8 + 4 * i] = (info.offset & 0xFFFF).to_bytes(2, "little") + \
+                (info.locals_size & 0xFFFF).to_bytes(2, "little")
         data[table_size:table_size + len(dat.data)] = dat.data
         data[table_size + len(dat.data):offset] = code_bytes
         spans.insert(0, Span(0, bytes(data[:table_size]), None, "object table"))

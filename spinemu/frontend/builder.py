@@ -41,6 +41,10 @@ def parse_number(text: str) -> int:
 
     >>> parse_number("$7F"), parse_number("%10_10"), parse_number("%%13"), parse_number("1_000")
     (127, 10, 7, 1000)
+
+    A decimal literal of more than 40 digits is far past 32 bits whatever its
+    digits are: it reads as ``2**160`` (Python refuses to convert decimal text
+    longer than 4,300 digits), and the constant folder reports it as too big.
     """
     t = text.replace("_", "")
     if t.startswith("$"):
@@ -49,6 +53,8 @@ def parse_number(text: str) -> int:
         return int(t[2:], 4)
     if t.startswith("%"):
         return int(t[1:], 2)
+    if len(t.lstrip("0")) > 40:
+        return 1 << 160
     return int(t)
 
 

@@ -271,7 +271,8 @@ class _Folder:
         t = type(node)
         if t is Number:
             if node.value > MASK:
-                raise ConstError(msg.CONSTANT_TOO_BIG.format(value=node.text), node)
+                text = node.text if len(node.text) <= 40 else node.text[:20] + "..." + node.text[-4:]
+                raise ConstError(msg.CONSTANT_TOO_BIG.format(value=text), node)
             return Const(node.value)
         if t is Float:
             return Const(float_bits(node.value), True)

@@ -16,6 +16,7 @@ from typing import Optional, Union
 from ..bench.board import Bench
 from ..bench.inputs import PinWaveforms
 from ..bench.terminal import screen, stream_text
+from ..diagnostics import split_lines
 from ..trace import PinTrace
 from .compiler import Program
 from .machine import CLOCK_HZ, MASK, Machine, StopRun
@@ -131,7 +132,7 @@ def run_program(prog: Program, *, seconds: Optional[float] = None, cycles: Optio
     m.debug_char_us = tm.debug_char_us
     m.eeprom_write_us = tm.eeprom_write_us
     m.path = prog.path
-    m.source_lines = prog.source.splitlines()
+    m.source_lines = split_lines(prog.source)
     code = prog.code
     m.positions = [ins.pos for ins in code]
     fns = [ins.fn for ins in code]

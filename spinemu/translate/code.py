@@ -8,11 +8,45 @@ the cycles the weaver charges around Python lines (see weave.py).
 """
 from __future__ import annotations
 
+import re
+
 from .costs import access_range, chain
 
-__all__ = ["Code", "COMMENT_COLUMN"]
+__all__ = ["Code", "COMMENT_COLUMN", "comment_text", "docstring_text"]
 
 COMMENT_COLUMN = 56
+
+
+def _escape_unprintable(text: str) -> str:
+    """Characters Python source cannot hold as they are (NUL, CR, line separators, lone
+    surrogates, other control characters) as their backslash escapes; tabs stay."""
+    if text.isprintable():
+        return text
+    return "".join(ch if ch.isprintable() or ch == "\t" else ch.encode("unicode_escape", "backslashreplace")
+                   .decode("ascii") for ch in text)
+
+
+def comment_text(text: str) -> str:
+    r"""Spin comment text made safe for the end of a Python ``#`` comment (one line, printable).
+
+    >>> print(comment_text("a\rb\x00c"))
+    a\rb\x00c
+    """
+    return _escape_unprintable(text)
+
+
+def docstring_text(text: str) -> str:
+    r"""Text for one line of a triple-quoted docstring that reads back as ``text``.
+
+    Backslashes are doubled, unprintable characters escaped, and a quote mark
+    escaped where it would start or end a triple quote (before another quote
+    mark, or last on the line).
+
+    >>> print(docstring_text('say ' + '"' * 3 + 'hi" \\N'))
+    say \"\""hi" \\N
+    """
+    out = _escape_unprintable(text.replace("\\", "\\\\"))
+    return re.sub(r'"(?="|$)', r'\\"', out)
 
 
 class Code:
@@ -66,7 +100,7 @@ class Code:
         text = self.spin.source.line(spin_line) or ""
         notes = [c.text.strip() for c in self.spin.comments_at(spin_line)
                  if c.kind in ("'", "''", "{", "{{") and text[: c.col - 1].strip()]
-        return " ".join(" ".join(n.split()) for n in notes if n)     # a block comment becomes one line
+        return comment_text(" ".join(" ".join(n.split()) for n in notes if n))  # a block comment: one line
 
     def comments_before(self, spin_line: int) -> None:
         """Carry over the Spin comments on lines of their own before ``spin_line``."""
@@ -76,7 +110,7 @@ class Code:
                 if src[: c.col - 1].strip():
                     continue
                 for part in c.text.splitlines() or [""]:
-                    self.line("#" + (" " + part.strip() if part.strip() else ""))
+                    self.line("#" + (" " + comment_text(part.strip()) if part.strip() else ""))
             self._last_spin = max(self._last_spin, n)
 
     def skip_to(self, spin_line: int) -> None:

@@ -35,7 +35,7 @@ from ..frontend.ast import key
 from ..frontend.objects import load_program
 from ..compiler.symbols import MethodSymbol, ObjSymbol, VarSymbol
 from ..compiler.dat import DatSymbol
-from .code import Code
+from .code import Code, docstring_text
 from .costs import price
 from .stmts import MethodTranslator
 
@@ -258,11 +258,12 @@ class ObjectTranslator:
         code = Code(spin)
         cls = self.classes[self.unit.path]
         doc = _file_doc(spin)
-        code.raw('"""' + (doc[0] if doc else os.path.basename(self.unit.path)))
+        base = docstring_text(os.path.basename(self.unit.path))
+        code.raw('"""' + (docstring_text(doc[0]) if doc else base))
         for d in doc[1:]:
-            code.raw(d)
+            code.raw(docstring_text(d))
         code.raw("")
-        code.raw(f"Translated from {os.path.basename(self.unit.path)} by spinemu.translate (generated: do not edit).")
+        code.raw(f"Translated from {base} by spinemu.translate (generated: do not edit).")
         code.raw("Each statement ends with '# L<n>', its Spin source line. Spin longs are signed ints; `wrap`")
         code.raw("keeps a result to 32 bits. `cog` is the cog running the code (cog.OUTA[7:4] is outa[7..4]).")
         code.raw('"""')
@@ -278,7 +279,7 @@ class ObjectTranslator:
         code.raw("")
         code.raw(f"class {cls}(spin.Object):")
         code.indent = 1
-        code.line('"""' + _summary(doc, self.unit.path) + '"""')
+        code.line('"""' + docstring_text(_summary(doc, self.unit.path)) + '"""')
         code.line("")
         code.line(f'SPIN_FIRST_METHOD = "{self.names.attr(self.cobj.methods[0].name)}"'
                   if self.cobj.methods else "SPIN_FIRST_METHOD = None")
@@ -376,7 +377,7 @@ class ObjectTranslator:
         code.indent += 1
         doc = _method_doc(self.unit.spin, m)
         if doc:
-            doc = [d.replace('"' * 3, "'" * 3) for d in doc]
+            doc = [docstring_text(d) for d in doc]
             if len(doc) == 1:
                 code.line('"' * 3 + doc[0] + '"' * 3)
             else:
@@ -660,6 +661,13 @@ def translate_program(src_path: str, include_dirs=()):
             visit(child)
 
     visit(top)
+    modules = {}
+    for u in units:
+        other = modules.setdefault(module_name(u.path), u.path)
+        if other != u.path:
+            raise TranslateError(f"'{os.path.basename(other)}' and '{os.path.basename(u.path)}' would both "
+                                 f"become the Python module '{module_name(u.path)}.py'; rename one of them",
+                                 path=u.path)
     classes, used = {}, set()
     for u in units:
         name = class_name(u.path)

@@ -204,11 +204,11 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.code.indent += 1
         first = last = None
         try:
-            if not stmts:
-                first = last = self.emit("pass")
             for st in stmts:
                 f, last = self.statement(st)
                 first = first or f
+            if first is None:                   # no statements, or none that writes a line
+                first = last = self.emit("pass")
         finally:
             self.code.indent -= 1
         return first, last
