@@ -620,9 +620,7 @@ def _trace_steps(args, trace, start: int, end: int, out: _Out) -> int:
                          "or --step-dir with the step and dir pins (e.g. --step-dir 0,1)")
     window = dict(start=start / trace.clock_hz, end=end / trace.clock_hz)
     if args.pins:
-        coils = _pins(args.pins)
-        if len(coils) != 4:
-            raise UsageError(f"--pins needs the four coil pins, got {len(coils)}: {args.pins}")
+        coils = _pins(args.pins, coils=True)
         drive = dict(coils=coils)
         steps = decode_steps(trace, coils, **window)
     else:

@@ -14,7 +14,7 @@ import pytest
 
 from spinemu.analysis.view import parse_pins
 from spinemu.cli import main
-from spinemu.pbasic.stimulus import parse_input_spec
+from spinemu.bench.inputs import parse_input_spec
 
 ROOT = Path(__file__).parent.parent.parent
 BLINK = ROOT / "spin_src" / "examples" / "blink.spin"
@@ -57,8 +57,10 @@ def test_stimulus_times_levels_and_pins_are_checked(tmp_path, spec):
 
 
 def test_a_stimulus_time_of_nan_is_refused_where_it_is_parsed():
-    with pytest.raises(ValueError, match="time 'nan'"):
+    with pytest.raises(ValueError, match="cannot read 'P5=0@0,1@nan'"):
         parse_input_spec("P5=0@0,1@nan")
+    with pytest.raises(ValueError, match="cannot read 'P5=1@2e9'"):
+        parse_input_spec("P5=1@2e9")        # later than any run: about 63 years
 
 
 def test_a_billion_pin_range_is_refused_before_it_is_built(log):

@@ -112,6 +112,6 @@ def test_steps_needs_one_drive_with_the_right_number_of_pins(tmp_path):
     log = _step_dir_log(tmp_path, [80_000])
     for argv, message in ((["--pins", "1..4", "--step-dir", "0,1"], "either --pins"), ([], "either --pins"),
                           (["--step-dir", "0"], "--step-dir needs two pins"),
-                          (["--pins", "1..3"], "--pins needs the four coil pins")):
+                          (["--pins", "1..3"], "a stepper has four coil pins")):
         code, _, err = run("trace", "steps", log, *argv)
         assert code == 2 and message in err, argv

@@ -411,7 +411,7 @@ def _file_value(rng: random.Random, wanted: str, valid=()) -> str:
 
 def _value(rng: random.Random, action, command: str = "") -> str:
     if action.choices:
-        return rng.choice(list(action.choices)) if rng.random() < 0.85 else rng.choice(["", "x", "PYTHON"])
+        return str(rng.choice(list(action.choices))) if rng.random() < 0.85 else rng.choice(["", "x", "PYTHON"])
     meta = (action.metavar or action.dest or "").upper()
     if action.type is not None and action.type not in (str,) or meta in ("N", "S", "CYCLE"):
         return rng.choice(NUMBERS)
