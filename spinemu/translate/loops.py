@@ -12,7 +12,7 @@ Spin                        Python                                          char
                             bounds) or ``while True`` + ``spin.repeat_step`` the loop's ``else:``
 ==========================  ==============================================  ==============================
 
-Jumps are priced short or long from the sizes the compiler gives the body.
+Jumps are priced short or long as the compiler laid them out (the compiled object says).
 """
 from __future__ import annotations
 
@@ -57,9 +57,8 @@ class LoopTranslator:
 
     def s_RepeatForever(self, st) -> tuple:
         line = self.emit("while True:", st)
-        size = self.body_size(st.body)
         _, last = self.loop_block(st.body, _LoopInfo("forever"))
-        self.charge(last, "a", [jump_op(self.T, "JMP", size + 2 > 64)])
+        self.charge(last, "a", [jump_op(self.T, "JMP", self.long_jump(st.pos, "repeat"))])
         return line, line
 
     def s_RepeatCount(self, st) -> tuple:
@@ -71,11 +70,11 @@ class LoopTranslator:
         else:
             first = None
         line = self.emit(f"for _ in range({count}):", st)
-        size = self.body_size(st.body)
-        long_back = size + 2 > 64
+        long_back = self.long_jump(st.pos, "repeat n", 1)
         T = self.T
         djnz_t, djnz_n = jump_op(T, "DJNZ", long_back, True), jump_op(T, "DJNZ", long_back, False)
-        self.charge(first or line, "b", self.expr_ops(st.count) + [jump_op(T, "TJZ", size + 3 > 63, False)])
+        self.charge(first or line, "b", self.expr_ops(st.count) + [jump_op(T, "TJZ", self.long_jump(st.pos, "repeat n"),
+                                                                             False)])
         info = _LoopInfo("count", next_ops=[djnz_t])
         with self.holding(4):               # the count stays on the stack while the body runs
             _, last = self.loop_block(st.body, info)
@@ -85,10 +84,9 @@ class LoopTranslator:
 
     def s_RepeatWhile(self, st) -> tuple:
         T = self.T
-        size = self.body_size(st.body)
         cond_ops = self.expr_ops(st.cond)
         if st.post:
-            long_j = size + 3 > 64
+            long_j = self.long_jump(st.cond.pos, "repeat while")
             line = self.emit("while True:", st)
             info = _LoopInfo("post")
             info.emit_next = lambda lead: self._post_test(st, cond_ops, long_j, lead)
@@ -100,9 +98,10 @@ class LoopTranslator:
         j = "JNZ" if st.until else "JZ"
         c = self.cond(st.cond)
         test = (f"not ({c})" if " " in c else f"not {c}") if st.until else c
-        jz_not = jump_op(T, j, size + 3 > 63, False)
-        jz_taken = jump_op(T, j, size + 3 > 63, True)
-        back = jump_op(T, "JMP", size + len(cond_ops) * 2 + 4 > 64)
+        long_j = self.long_jump(st.pos, "repeat while")
+        jz_not = jump_op(T, j, long_j, False)
+        jz_taken = jump_op(T, j, long_j, True)
+        back = jump_op(T, "JMP", self.long_jump(st.pos, "repeat"))
         if self.hoisted or any(o.kind for o in cond_ops):
             line = self.emit("while True:", st)
             self.code.indent += 1
@@ -143,10 +142,9 @@ class LoopTranslator:
         simple = (count is not None and isinstance(var, A.NameRef)
                   and var.index is None and self.lookup(var.name, var)[0] in ("local", "var", "dat")
                   and not assigns(st.body, key(var.name)))
-        size = self.body_size(st.body)
         init = self.piece(lambda: (self.mc.expr(st.start), self.mc.var(var, 1)))
         step_piece = self.piece(lambda: self._step_code(st), inside=True)
-        long_back = size + self.size(lambda: self._step_code(st)) > 64
+        long_back = self.long_jump(st.pos, "repeat from")
         step_ops = self._fix_repeat(step_piece, st, long_back, True)
         exit_ops = self._fix_repeat(step_piece, st, long_back, False)
         delta = exit_ops[-1].rest - step_ops[-1].rest

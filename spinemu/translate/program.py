@@ -45,6 +45,11 @@ _RESERVED_LOCALS = {"self", "spin", "cog", "wrap", "range", "max", "min", "abs",
 _RESERVED_ATTRS = {"at", "addr", "object_base", "string", "_pbase", "_vbase", "mro", "spin"}
 
 
+#: the notes of the jumps the compiler makes for statements (compiler/stmts.py)
+_JUMP_NOTES = frozenset(("if", "to end of if", "repeat", "repeat n", "repeat while", "repeat from",
+                         "case value", "case range", "next", "quit"))
+
+
 class TranslateError(SpinError):
     """A Spin construct the translator does not handle (it names the construct and its place)."""
 
@@ -222,14 +227,26 @@ class ObjectTranslator:
         self._index_spans()
         return bytes(self._bytes.get((pos.line, pos.col), b""))
 
+    def long_jumps_at(self, pos, note: str) -> list:
+        """For each jump the compiler made at ``pos`` with ``note`` ("if", "repeat", "case value" ...), in
+        order: is it the two-byte form?
+
+        Read from the compiled object: a jump's size depends on the layout of
+        everything between it and its target, other jumps included.
+        """
+        self._index_spans()
+        return self._jumps.get((pos.line, pos.col, note), [])
+
     def _index_spans(self) -> None:
         if self._offsets is None:
-            self._offsets, self._bytes = {}, {}
+            self._offsets, self._bytes, self._jumps = {}, {}, {}
             for span in self.cobj.spans:
                 if span.pos is not None and span.data:
                     at = (span.pos.line, span.pos.col)
                     self._offsets.setdefault(at, span.offset)
                     self._bytes.setdefault(at, bytearray()).extend(span.data)
+                    if span.note in _JUMP_NOTES:
+                        self._jumps.setdefault(at + (span.note,), []).append(len(span.data) > 2)
 
     def method_end(self, method) -> int:
         return self.infos[key(method.name)].end

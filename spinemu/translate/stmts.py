@@ -147,25 +147,6 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                 if line is not None:
                     self.code.call_depths[line] = depth
 
-    def size(self, fn) -> int:
-        mc = self.mc
-        saved = mc.code, mc.loops
-        mc.code = CodeBuffer()
-        nxt, end = Label(), Label()
-        mc.loops = [cstmts._Loop(nxt, end)]
-        try:
-            fn()
-            mc.code.mark(nxt)
-            mc.code.mark(end)
-            start = self.objt.offset_of(self.cur_pos, self.method)
-            _, n = mc.code.layout(start)
-        finally:
-            mc.code, mc.loops = saved
-        return n - start
-
-    def body_size(self, stmts) -> int:
-        return self.size(lambda: self.mc.block(stmts))
-
     def expr_ops(self, node) -> list:
         return self.piece(lambda: self.mc.expr(node))
 
@@ -177,6 +158,11 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         table = getattr(T, name)
         found, missed = ceil16(table[True] + 12), ceil16(table[False] + 12)
         return sum(ceil16(o.rest + 12) for o in ops) + missed, found - missed
+
+    def long_jump(self, pos, note: str, k: int = 0) -> bool:
+        """Is the ``k``-th jump the compiler made at ``pos`` with ``note`` the two-byte form (compiled object)?"""
+        found = self.objt.long_jumps_at(pos, note)
+        return found[k] if k < len(found) else False
 
     def charge(self, line: int, slot: str, ops) -> None:
         """Charge ``ops`` at ``slot`` of ``line``; nothing runs after a return, abort, next or quit."""
@@ -477,16 +463,15 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             top = top or header
             branch_first = branch_first or header
             first = first or branch_first
-            body_size = self.body_size(br.body)
             j = "JNZ" if br.negate else "JZ"
-            ops = self.expr_ops(br.cond) + [jump_op(self.T, j, body_size + 3 > 63, taken=False)]
+            ops = self.expr_ops(br.cond) + [jump_op(self.T, j, self.long_jump(br.pos, "if"), taken=False)]
             pre, post = split(ops)
             self.charge(branch_first, "b", pre)
             body_first, body_last = self.block(br.body)
             self.charge(body_first, "b", post)
             self.charge(header, "e", post)
             if i < last or st.else_body is not None:
-                self.charge(body_last, "a", [jump_op(self.T, "JMP", False)])
+                self.charge(body_last, "a", [jump_op(self.T, "JMP", self.long_jump(br.pos, "to end of if"))])
         if st.else_body is not None:
             self.code.comments_before(st.else_pos.line if st.else_pos else st.pos.line)
             self.code.line("else:", st.else_pos.line if st.else_pos else None)
@@ -511,12 +496,11 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         if first is not None:               # a call in the selector comes after CASE's end address is pushed
             self.piece(lambda: self.mc.block([st]))
             self.note_depths(range(first, ln + 1))
-        end = self.objt.offset_of(st.pos, self.method) + self.body_size([st])
-        imm = 1 if end < 0x100 else 2
+        imm = 1 if self.objt.compiled_at(st.pos)[:1] == b"\x38" else 2     # the end address: PUSH_IMM1 or 2
         head = [Op(0x37 + imm, self.T.push_imm[imm])] + self.expr_ops(st.value)
         items = [it for it in st.items if it.values is not None]
         other = next((it for it in st.items if it.values is None), None)
-        jump_long = self.case_jumps(items, other)
+        jump_long = self.case_jumps(items)
         header = top = body_last = None
         for n, item in enumerate(items):
             conds, ops, per_value = [], [], []
@@ -567,24 +551,19 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             self.charge(header, "e", [jump_op(self.T, "CASE_DONE")])
         return first, top or body_last
 
-    def case_jumps(self, items, other) -> dict:
+    def case_jumps(self, items) -> dict:
         """For each case value: is its jump to the branch body the two-byte form (farther than 63 bytes)?
 
-        Layout (compiler/stmts.py): all compares, the OTHER body and CASE_DONE,
-        then each branch body followed by CASE_DONE.
+        The compiler's layout decides (compare jumps in between may be long
+        themselves), so the sizes are read from the compiled object.
         """
-        compares = []                       # (value node, item index, bytes)
-        for k, item in enumerate(items):
-            for v in item.values:
-                exprs = [v.low, v.high] if isinstance(v, A.Range) else [v]
-                size = sum(self.size(lambda e=e: self.mc.expr(e)) for e in exprs) + 2
-                compares.append((v, k, size))
-        bodies = [self.body_size(item.body) + 1 for item in items]
-        other_size = (self.body_size(other.body) if other is not None else 0) + 1
         result = {}
-        for i, (v, k, _size) in enumerate(compares):
-            after = sum(c[2] for c in compares[i + 1:]) + other_size + sum(bodies[:k])
-            result[id(v)] = after > 63
+        for item in items:
+            values = self.objt.long_jumps_at(item.pos, "case value")
+            ranges = self.objt.long_jumps_at(item.pos, "case range")
+            for v in item.values:
+                found = ranges if isinstance(v, A.Range) else values
+                result[id(v)] = found.pop(0) if found else False
         return result
 
     @contextmanager
