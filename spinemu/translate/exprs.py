@@ -10,7 +10,8 @@ truth test).  Stores to hub variables and registers keep the low bits anyway.
 Spin expressions with side effects (``x := y``, ``x++``, ``x~``) become
 statements placed before the one that uses them (``hoist``), in Spin's
 evaluation order; a value computed before such a side effect is first saved
-in a temporary so that it keeps Spin's meaning.
+in a temporary so that it keeps Spin's meaning (order.py decides, from the
+AST).
 
 Operator mapping (Propeller Manual v1.2, "Operators"): Python's operator
 where it means the same on signed values (``+ - * & | ^ ~ == < max min``),
@@ -24,6 +25,7 @@ from dataclasses import dataclass
 
 from ..frontend import ast as A
 from ..frontend.constants import float_bits
+from .order import ASSIGNING_UNARY, EvalOrder, index_nodes
 
 __all__ = ["X", "ExprTranslator", "PREC"]
 
@@ -41,6 +43,7 @@ class X:
     wrapped: bool = True
     boolean: bool = False
     const: object = None          # its value, if a constant
+    saved: bool = False           # a temporary assigned once (nothing can change it)
 
     def paren(self, prec: int) -> str:
         return f"({self.text})" if self.prec < prec else self.text
@@ -91,8 +94,8 @@ def number_text(node) -> str:
     return str(v)
 
 
-class ExprTranslator:
-    """Mix-in of the method translator (stmts.py): needs ``names``, ``lookup``, ``hoist``, ``temp``, ``error``."""
+class ExprTranslator(EvalOrder):
+    """Mix-in of the method translator (stmts.py): needs ``names``, ``lookup``, ``hoisted``, ``temp``, ``error``."""
 
     # ------------------------------------------------------------------ entry points
     def value(self, node) -> str:
@@ -145,6 +148,9 @@ class ExprTranslator:
 
     def x_Paren(self, node) -> X:
         return self.expr(node.expr)
+
+    def x_Given(self, node) -> X:
+        return node.x
 
     def constant(self, node, spin_constant: bool = False):
         """The folded value of a constant expression, or None.
@@ -221,10 +227,10 @@ class ExprTranslator:
 
     def x_MemRef(self, node) -> X:
         mem = {1: "byte", 2: "word", 4: "long"}[node.size]
-        base = self.expr(node.base).text
         if node.index is None:
-            return X(f"spin.{mem}[{base}]")
-        return X(f"spin.{mem}[{base}, {self.expr(node.index).text}]")
+            return X(f"spin.{mem}[{self.expr(node.base).text}]")
+        base, index = self.operands([node.base, node.index])
+        return X(f"spin.{mem}[{base.text}, {index.text}]")
 
     def x_RegRef(self, node) -> X:
         name = node.name.upper()
@@ -232,12 +238,13 @@ class ExprTranslator:
             return X(f"cog.{name}")
         if node.bit2 is None:
             return X(f"cog.{name}[{self.expr(node.bit).text}]")
-        return X(f"cog.{name}[{self.expr(node.bit).text}:{self.expr(node.bit2).text}]")
+        hi, lo = self.operands([node.bit, node.bit2])
+        return X(f"cog.{name}[{hi.text}:{lo.text}]")
 
     def x_SprRef(self, node) -> X:
         return X(f"cog.spr[{self.expr(node.index).text}]")
 
-    def child(self, node, index) -> str:
+    def child(self, node, index, x: X = None) -> str:
         """The child object ``node.obj`` (``obj[i]``); an array named without an index is its element 0, as in Spin.
 
         Spin indexes the object table from the OBJ line's first entry, so
@@ -253,7 +260,7 @@ class ExprTranslator:
             return obj
         if count == 1 or (c is not None and not 0 <= c < count):
             self.unsupported(f"an index on object '{node.obj}' past its {count} instance{'s' if count > 1 else ''}", node)
-        return obj + f"[{self.value(index)}]"
+        return obj + f"[{self.wrapped(x).text if x is not None else self.value(index)}]"
 
     def x_ObjConst(self, node) -> X:
         obj = self.child(node, None)
@@ -271,11 +278,17 @@ class ExprTranslator:
         return X(f"self.{self.names.attr(name)}({self.args(args)})")
 
     def args(self, args) -> str:
-        return ", ".join(self.value(a) for a in args)
+        """Call arguments, left to right as Spin pushes them."""
+        return ", ".join(self.wrapped(x).text for x in self.operands(args))
 
     def x_ObjCall(self, node) -> X:
-        obj = self.child(node, node.index)
-        return X(f"{obj}.{self.names.child_method(node.obj, node.method)}({self.args(node.args)})")
+        method = self.names.child_method(node.obj, node.method)
+        if node.index is None or self.constant(node.index) is not None:
+            return X(f"{self.child(node, node.index)}.{method}({self.args(node.args)})")
+        # Spin pushes the arguments, then the index; Python indexes first
+        *args, index = self.operands(node.args + [node.index], reorder_after=len(node.args))
+        obj = self.child(node, node.index, index)
+        return X(f"{obj}.{method}({', '.join(self.wrapped(a).text for a in args)})")
 
     def x_AbortTrap(self, node) -> X:
         call = node.call
@@ -304,7 +317,7 @@ class ExprTranslator:
             return X(f"abs({self.wrapped(x).text})", wrapped=False)
         if op in _HELPER_UN:
             return X(f"{_HELPER_UN[op]}({x.text})")
-        if op in ("~", "~~", "?"):
+        if op in ASSIGNING_UNARY:
             return self.pre_op(A.PreOp(node.pos, op, node.operand))
         self.unsupported(f"the operator {node.op}", node)
 
@@ -314,13 +327,7 @@ class ExprTranslator:
 
     def x_Binary(self, node) -> X:
         op = node.op.upper() if node.op.isalpha() else node.op
-        left = self.expr(node.left)
-        mark = len(self.hoisted)
-        right = self.expr(node.right)
-        if len(self.hoisted) > mark and left.const is None and not _is_plain(left):
-            tmp = self.temp("value")
-            self.hoisted.insert(mark, f"{tmp} = {left.text}")
-            left = X(tmp, wrapped=left.wrapped, boolean=left.boolean)
+        left, right = self.operands([node.left, node.right])
         if op in _CMP:
             return X(f"{self.wrapped(left).paren(5)} {_CMP[op]} {self.wrapped(right).paren(5)}", 4, boolean=True)
         if op in ("AND", "OR"):
@@ -359,32 +366,29 @@ class ExprTranslator:
             return X(f"{_HELPER_BIN[op]}({left.text}, {right.text})")
         self.unsupported(f"the operator {node.op}", node)
 
-    def has_effects(self, node) -> bool:
-        """Does evaluating ``node`` change anything (a method call, an assignment, ``x++``, a lock or cog built-in)?"""
-        for n in A.walk(node):
-            if isinstance(n, _EFFECTS) or isinstance(n, A.Builtin) and n.name not in _PURE_BUILTINS:
-                return True
-            if isinstance(n, A.NameRef) and self.lookup(n.name, n)[0] == "method":   # called without ()
-                return True
-        return False
-
     def value_x(self, x: X) -> str:
         return self.wrapped(x).text
 
     # ------------------------------------------------------------------ side effects
     def x_Assign(self, node) -> X:
         if not self.narrow(node.target) and not isinstance(node.target, A.RegRef):
-            self.assign(node)
-            return self.reread(node.target)
+            text = self.assign(node, reuse=True)
+            return self.reread(node.target, text)
         # a byte/word/bit-field target keeps the low bits, but the expression's value is the whole result
         value = self.expr(node.value)
+        mark = len(self.hoisted)
+        text = self.place(node.target, reuse=True)
         if node.op != ":=":
+            if self.disturbs(node.value, [node.target], reorder=True):
+                value = self.save(value, mark)      # Spin computes the value, then reads the target
             op = node.op.upper() if node.op.isalpha() else node.op
-            value = self.wrapped(self.binop(op, self.expr(node.target), value))
+            value = self.binop(op, X(text), value)
+        elif self.disturbs(node.value, index_nodes(node.target)):
+            value = self.save(value, mark)      # the index's side effects come first in the Python
         tmp = self.temp("value")
         self.hoisted.append(f"{tmp} = {self.wrapped(value).text}")
-        self.store(node.target, X(tmp), len(self.hoisted))
-        return X(tmp)
+        self.hoisted.append(f"{text} = {tmp}")
+        return X(tmp, saved=True)
 
     def x_PreOp(self, node) -> X:
         return self.pre_op(node)
@@ -392,15 +396,15 @@ class ExprTranslator:
     def pre_op(self, node) -> X:
         if (node.op in ("~", "~~", "?") and self.narrow(node.target)) or isinstance(node.target, A.RegRef):
             # the value is what was computed (a register such as CNT does not keep what is written)
-            old = self.expr(node.target).text
+            old = self.place(node.target, reuse=True)
             new = {"~": f"spin.sign_extend_byte({old})", "~~": f"spin.sign_extend_word({old})",
                    "?": f"spin.random_forward({old})", "++": f"wrap({old} + 1)", "--": f"wrap({old} - 1)"}[node.op]
             tmp = self.temp("value")
             self.hoisted.append(f"{tmp} = {new}")
-            self.store(node.target, X(tmp), len(self.hoisted))
-            return X(tmp)
-        self.step(node.target, node.op)
-        return self.reread(node.target)
+            self.hoisted.append(f"{old} = {tmp}")
+            return X(tmp, saved=True)
+        text = self.step(node.target, node.op, reuse=True)
+        return self.reread(node.target, text)
 
     def narrow(self, target) -> bool:
         """Is ``target`` narrower than a long (its stored value may differ from the assigned one)?"""
@@ -416,26 +420,28 @@ class ExprTranslator:
     def x_PostOp(self, node) -> X:
         if node.op == "?":          # x? leaves the new value, like ?x (Propeller Manual, "Random")
             if self.narrow(node.target) or isinstance(node.target, A.RegRef):
+                text = self.place(node.target, reuse=True)
                 tmp = self.temp("value")
-                self.hoisted.append(f"{tmp} = spin.random_reverse({self.expr(node.target).text})")
-                self.store(node.target, X(tmp), len(self.hoisted))
-                return X(tmp)
-            self.step(node.target, node.op, post=True)
-            return self.reread(node.target)
+                self.hoisted.append(f"{tmp} = spin.random_reverse({text})")
+                self.hoisted.append(f"{text} = {tmp}")
+                return X(tmp, saved=True)
+            text = self.step(node.target, node.op, post=True, reuse=True)
+            return self.reread(node.target, text)
+        text = self.place(node.target, reuse=True)
         old = self.temp("old_" + _short(node.target))
-        self.hoisted.append(f"{old} = {self.expr(node.target).text}")
-        self.step(node.target, node.op, post=True)
-        return X(old)
+        self.hoisted.append(f"{old} = {text}")
+        self.step(node.target, node.op, post=True, text=text)
+        return X(old, saved=True)
 
-    def reread(self, target) -> X:
-        """The value an assignment leaves: the target read again (longs), else a saved copy."""
+    def reread(self, target, text: str) -> X:
+        """The value an assignment leaves: the target read again (unindexed longs), else a saved copy."""
         if isinstance(target, (A.NameRef, A.ResultRef)) and getattr(target, "index", None) is None:
             kind, sym = self.lookup(getattr(target, "name", "result"), target)
             if kind == "local" or getattr(sym, "size", 4) == 4:
-                return self.expr(target)
+                return X(text)
         tmp = self.temp("value")
-        self.hoisted.append(f"{tmp} = {self.expr(target).text}")
-        return X(tmp)
+        self.hoisted.append(f"{tmp} = {text}")
+        return X(tmp, saved=True)
 
     # ------------------------------------------------------------------ addresses
     def x_AddrOf(self, node) -> X:
@@ -461,10 +467,10 @@ class ExprTranslator:
             return X(f'{self.frame_name}.addr("{self.result_name}", {self.value(t.index)})')
         if isinstance(t, A.MemRef):
             size = t.size
-            base = self.expr(t.base)
             if t.index is None:
-                return base
-            return X(f"{base.paren(9)} + {size} * {self.expr(t.index).paren(10)}", 9, wrapped=False)
+                return self.expr(t.base)
+            base, index = self.operands([t.base, t.index])
+            return X(f"{base.paren(9)} + {size} * {index.paren(10)}", 9, wrapped=False)
         if isinstance(t, A.MemberRef):
             return X(_member_addr(self.expr(t).text, t.size), 9, wrapped=False)
         self.unsupported("this address-of (@) form", node)
@@ -477,6 +483,10 @@ class ExprTranslator:
         items = []
         costs = []
         down = node.name.lower().startswith("lookdown")
+        if self.has_effects(node.items):
+            # Spin stops at the matching item; the Python list would evaluate them all
+            self.unsupported(f"a {node.name.lower()} item with side effects", node)
+        value = self.value(node.value)
         for item in node.items:
             if isinstance(item, A.Range):
                 items.append(f"spin.span({self.value(item.low)}, {self.value(item.high)})")
@@ -489,21 +499,10 @@ class ExprTranslator:
                 items.append(self.value(item))
                 costs.append(self.lookup_item_cost([item], down, False))
         self.pending_lookups.append(costs)
-        return X(f"spin.{node.name.lower()}({self.value(node.value)}, [{', '.join(items)}])")
+        return X(f"spin.{node.name.lower()}({value}, [{', '.join(items)}])")
 
     def x_Range(self, node):
         self.unsupported("a range outside case or lookup", node)
-
-
-#: built-ins without side effects (reading them twice or not at all changes nothing)
-_PURE_BUILTINS = {"constant", "float", "round", "trunc", "string", "strsize", "strcomp", "cogid",
-                  "clkfreq", "clkmode", "chipver"}
-_EFFECTS = (A.Call, A.ObjCall, A.Assign, A.PreOp, A.PostOp, A.AbortTrap)
-
-
-def _is_plain(x: X) -> bool:
-    t = x.text
-    return t.isidentifier()
 
 
 def _short(target) -> str:

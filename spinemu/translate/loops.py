@@ -64,7 +64,7 @@ class LoopTranslator:
     def s_RepeatCount(self, st) -> tuple:
         c = self.constant(st.count)
         n = self.expr(st.count)
-        count = n.text if c is not None and c >= 0 else f"spin.u32({self.value(st.count)})"
+        count = n.text if c is not None and c >= 0 else f"spin.u32({self.wrapped(n).text})"
         if self.hoisted:
             first, _ = self.flush(None, st)
         else:

@@ -25,7 +25,6 @@ Costs come from the compiler's own bytecode for each piece (costs.py).
 """
 from __future__ import annotations
 
-import re
 from contextlib import contextmanager
 
 from ..compiler.code import CodeBuffer, Label
@@ -34,6 +33,7 @@ from ..frontend import ast as A
 from ..frontend.ast import key
 from .costs import Op, call_depths, ceil16, drop_result_delta, price, jump_op, split, split_read
 from .exprs import ExprTranslator, X
+from .order import Given, index_nodes
 from .loops import LoopTranslator
 
 __all__ = ["MethodTranslator"]
@@ -327,27 +327,20 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         return ops
 
     # ------------------------------------------------------------------ assignments
-    def assign(self, node) -> None:
+    def assign(self, node, reuse: bool = False) -> str:
+        """Hoist ``target := value`` (or ``target OP= value``) as a statement; the target's text.
+
+        Spin computes the value, then the target's index, then (``OP=``) reads
+        the target; the value is saved first where Python's order would differ
+        (order.py).  ``reuse``: the target is read again for the expression's value.
+        """
         target = node.target
         value = self.expr(node.value)
         mark = len(self.hoisted)
         if node.op == ":=":
-            self.store(target, value, mark)
-            return
+            return self.store(target, node.value, value, mark, reuse)
         op = node.op.upper() if node.op.isalpha() else node.op
-        self.store_op(target, op, value, mark)
-
-    def target_text(self, target, value: X, mark: int):
-        """The target as an assignment target; saves ``value`` first if the target hoists code."""
-        before = len(self.hoisted)
-        text = self.expr(target).text
-        written = [h.split(" ")[0] for h in self.hoisted[before:]]
-        if (any(w in value.text for w in written) or (written and _has_call(value.text))) and value.const is None \
-                and not value.text.isidentifier():
-            tmp = self.temp("value")
-            self.hoisted.insert(mark, f"{tmp} = {value.text}")
-            value = X(tmp, wrapped=value.wrapped, boolean=value.boolean)
-        return text, value
+        return self.store_op(target, op, node.value, value, mark, reuse)
 
     def is_local(self, target) -> bool:
         """Is ``target`` a Python local (stores must wrap to 32 bits themselves)?"""
@@ -357,30 +350,44 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             return True
         return isinstance(target, A.NameRef) and key(target.name) in self.frame
 
-    def store(self, target, value: X, mark: int) -> None:
-        text, value = self.target_text(target, value, mark)
+    def store(self, target, value_node, value: X, mark: int, reuse: bool = False) -> str:
+        text = self.place(target, reuse)
+        if value.const is None and not value.saved and self.disturbs(value_node, index_nodes(target)):
+            value = self.save(value, mark)      # the index's side effects come first in the Python
         if self.is_local(target):
             self.hoisted.append(f"{text} = {self.wrapped(value).text}")
         else:
             v = self.wrapped(value).text if value.boolean else value.text
             self.hoisted.append(f"{text} = {v}")
+        return text
 
-    def store_op(self, target, op: str, value: X, mark: int) -> None:
-        text, value = self.target_text(target, value, mark)
+    def store_op(self, target, op: str, value_node, value: X, mark: int, reuse: bool = False) -> str:
         local = self.is_local(target)
-        if op in _PY_AUG and not local and not value.boolean:
+        aug = op in _PY_AUG and not local and not value.boolean
+        text = self.place(target, reuse or not aug)
+        if value.const is None and not value.saved and \
+                self.disturbs(value_node, index_nodes(target) + [target], reorder=True):
+            value = self.save(value, mark)      # Python reads the target before the value
+        if aug:
             self.hoisted.append(f"{text} {op}= {value.text}")
-            return
+            return text
         new = self.binop(op, X(text), value)
         self.hoisted.append(f"{text} = {(self.wrapped(new) if local or new.boolean else new).text}")
+        return text
 
     def binop(self, op: str, left: X, right: X) -> X:
         """``left OP right`` for already translated operands (assignment operators)."""
-        return self.x_Binary(A.Binary(None, op, _Given(None, left), _Given(None, right)))
+        return self.x_Binary(A.Binary(None, op, Given(None, left), Given(None, right)))
 
-    def step(self, target, op: str, post: bool = False) -> None:
-        text, _ = self.target_text(target, X("0"), len(self.hoisted))
+    def step(self, target, op: str, post: bool = False, reuse: bool = False, text: str = None) -> str:
+        """Hoist ``++x``/``x++``/``~x``/``x~``/``?x``/``x?`` on ``target`` as a statement; the target's text.
+
+        ``text``: the target placed already (``x++`` read its old value first).
+        """
         local = self.is_local(target)
+        if text is None:        # T = f(T) reads the target in the same statement that writes it
+            twice = op == "?" or op in ("~", "~~") and not post
+            text = self.place(target, reuse or twice)
         if op in ("++", "--"):
             sign = "+" if op == "++" else "-"
             self.hoisted.append(f"{text} = wrap({text} {sign} 1)" if local else f"{text} {sign}= 1")
@@ -393,15 +400,13 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             self.hoisted.append(f"{text} = spin.{fn}({text})")
         else:
             self.unsupported(f"the operator {op}", target)
+        return text
 
     def unary_assign(self, e) -> None:
         """``-x``, ``!x``, ``||x`` ... written as a statement: Spin changes ``x`` in place."""
-        text, _ = self.target_text(e.operand, X("0"), len(self.hoisted))
-        new = self.wrapped(self.x_Unary(A.Unary(e.pos, e.op, _Given(e.pos, X(text)))))
+        text = self.place(e.operand, reuse=True)
+        new = self.wrapped(self.x_Unary(A.Unary(e.pos, e.op, Given(e.pos, X(text)))))
         self.hoisted.append(f"{text} = {new.text}")
-
-    def x__Given(self, node) -> X:
-        return node.x
 
     # ------------------------------------------------------------------ builtins
     def x_Builtin(self, node) -> X:
@@ -420,7 +425,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                   "strcomp", "bytefill", "wordfill", "longfill", "bytemove", "wordmove", "longmove",
                   "clkset", "waitvid")
         if name in simple:
-            return X(f"spin.{name}({', '.join(self.value(a) for a in args)})")
+            return X(f"spin.{name}({', '.join(self.wrapped(x).text for x in self.operands(args))})")
         if name in ("locknew", "cogid", "clkfreq", "clkmode", "reboot"):
             return X(f"spin.{name}()")
         if name == "chipver":
@@ -428,16 +433,22 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.unsupported(f"the built-in {node.name}", node)
 
     def cog_start(self, node, name, args) -> X:
+        """``cognew``/``coginit``: Spin evaluates a Spin method's arguments, the stack, then coginit's cog id
+        (Python: the id first); an address (PASM) form in the written order."""
         new = name == "cognew"
         first = args[0] if new else args[1]
         rest = args[1] if new else args[2]
         target = first.expr if isinstance(first, A.Paren) else first
-        head = "" if new else f"{self.value(args[0])}, "
         if isinstance(target, (A.Call, A.NameRef)) and self.lookup(target.name, target)[0] == "method":
             call_args = target.args if isinstance(target, A.Call) else []
-            params = "".join(f", {self.value(a)}" for a in call_args)
-            return X(f"spin.{name}({head}self.{self.names.attr(target.name)}{params}, stack={self.value(rest)})")
-        return X(f"spin.{name}({head}{self.value(first)}, {self.value(rest)}, stack=0)")
+            nodes = list(call_args) + [rest] + ([] if new else [args[0]])
+            xs = [self.wrapped(x).text for x in self.operands(nodes, reorder_after=None if new else len(nodes) - 1)]
+            head = "" if new else f"{xs.pop()}, "
+            stack = xs.pop()
+            params = "".join(f", {x}" for x in xs)
+            return X(f"spin.{name}({head}self.{self.names.attr(target.name)}{params}, stack={stack})")
+        xs = [self.wrapped(x).text for x in self.operands(([] if new else [args[0]]) + [first, rest])]
+        return X(f"spin.{name}({', '.join(xs)}, stack=0)")
 
     # ------------------------------------------------------------------ if
     def s_If(self, st) -> tuple:
@@ -581,15 +592,6 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             _, last = self.statement(s)
         return last
 
-_CALL = re.compile(r"\bself\.(?!(?:addr|at|string|object_base)\()\w+(?:\[[^\]]*\])?(?:\.\w+)*\(|"
-                   r"\bspin\.(?:trap|cognew|coginit|lock\w+)\(")
-
-
-def _has_call(text: str) -> bool:
-    """Does a translated expression call a method (so that Spin's evaluation order matters)?"""
-    return bool(_CALL.search(text))
-
-
 def needs_hub_frame(method) -> bool:
     """Does ``method`` need its locals in hub RAM (a local array, ``@local``, ``local[i]``, ``local.byte``)?"""
     if any(loc.count is not None for loc in method.locals):
@@ -609,11 +611,3 @@ def needs_hub_frame(method) -> bool:
         if isinstance(n, A.MemberRef) and local_ref(n.base):
             return True
     return False
-
-
-class _Given(A.Expr):
-    """An already translated operand (used to reuse operator translation)."""
-
-    def __init__(self, pos, x):
-        self.pos = pos
-        self.x = x
