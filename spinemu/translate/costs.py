@@ -70,6 +70,11 @@ def split(ops) -> tuple[list, list]:
     if not timed:
         return list(ops), []
     j, anchor = min(timed, key=lambda io: (_PRIORITY[io[1].kind], io[0]))
+    calls = [i for i, o in timed if o.kind == "call" and i < j]
+    if anchor.kind == "write" and calls:
+        # ``outa := f(x)``: the call is paid before it runs, the write after the call returns
+        # (the translator pays ``post`` between computing the value and storing it)
+        j, anchor = calls[-1], ops[calls[-1]]
     cut = j + 1 if anchor.kind in ("write", "call") else j
     pre, post = list(ops[:cut]), list(ops[cut:])
     post = [o for o in post if o.kind != "wait"]

@@ -110,6 +110,10 @@ class ExprTranslator(EvalOrder):
             return x
         return X(f"wrap({x.text})")
 
+    def num(self, x: X) -> X:
+        """``x`` as a number: a comparison becomes Spin's TRUE (-1) or FALSE; other values stay as they are."""
+        return X(f"spin.flag({x.text})") if x.boolean else x
+
     def cond(self, node) -> str:
         """``node`` as a Python condition."""
         x = self.expr(node)
@@ -228,8 +232,8 @@ class ExprTranslator(EvalOrder):
     def x_MemRef(self, node) -> X:
         mem = {1: "byte", 2: "word", 4: "long"}[node.size]
         if node.index is None:
-            return X(f"spin.{mem}[{self.expr(node.base).text}]")
-        base, index = self.operands([node.base, node.index])
+            return X(f"spin.{mem}[{self.num(self.expr(node.base)).text}]")
+        base, index = map(self.num, self.operands([node.base, node.index]))
         return X(f"spin.{mem}[{base.text}, {index.text}]")
 
     def x_RegRef(self, node) -> X:
@@ -237,12 +241,12 @@ class ExprTranslator(EvalOrder):
         if node.bit is None:
             return X(f"cog.{name}")
         if node.bit2 is None:
-            return X(f"cog.{name}[{self.expr(node.bit).text}]")
-        hi, lo = self.operands([node.bit, node.bit2])
+            return X(f"cog.{name}[{self.num(self.expr(node.bit)).text}]")
+        hi, lo = map(self.num, self.operands([node.bit, node.bit2]))
         return X(f"cog.{name}[{hi.text}:{lo.text}]")
 
     def x_SprRef(self, node) -> X:
-        return X(f"cog.spr[{self.expr(node.index).text}]")
+        return X(f"cog.spr[{self.num(self.expr(node.index)).text}]")
 
     def child(self, node, index, x: X = None) -> str:
         """The child object ``node.obj`` (``obj[i]``); an array named without an index is its element 0, as in Spin.
@@ -303,6 +307,8 @@ class ExprTranslator(EvalOrder):
     def x_Unary(self, node) -> X:
         op = node.op.upper() if node.op.isalpha() else node.op
         x = self.expr(node.operand)
+        if op != "NOT":
+            x = self.num(x)
         if op == "+":
             return x
         if op == "-":
@@ -328,11 +334,15 @@ class ExprTranslator(EvalOrder):
     def x_Binary(self, node) -> X:
         op = node.op.upper() if node.op.isalpha() else node.op
         left, right = self.operands([node.left, node.right])
+        if op not in ("AND", "OR"):
+            left, right = self.num(left), self.num(right)
         if op in _CMP:
             return X(f"{self.wrapped(left).paren(5)} {_CMP[op]} {self.wrapped(right).paren(5)}", 4, boolean=True)
         if op in ("AND", "OR"):
-            if self.has_effects(node.right):
-                # Spin evaluates both operands (no short cut): `ok := start_a and start_b` calls both
+            right_effects = self.effects(node.right)
+            if right_effects.any or right_effects.paid:
+                # Spin evaluates both operands (no short cut): `ok := start_a and start_b` calls both,
+                # `a and b / c` pays for the division
                 sym = "&" if op == "AND" else "|"
                 p = PREC[sym]
                 lt = left.paren(p + 1) if left.boolean else f"bool({left.text})"
@@ -352,11 +362,11 @@ class ExprTranslator(EvalOrder):
             return X(f"{lt} {op} {rt}", p, wrapped=wrapped)
         if op == "<<":
             count = right.const & 31 if right.const is not None else None
-            rt = str(count) if count is not None else f"({right.text} & 31)"
+            rt = str(count) if count is not None else f"({right.paren(PREC['&'] + 1)} & 31)"
             return X(f"{left.paren(9)} << {rt}", 8, wrapped=False)
         if op == "~>":
             count = right.const & 31 if right.const is not None else None
-            rt = str(count) if count is not None else f"({right.text} & 31)"
+            rt = str(count) if count is not None else f"({right.paren(PREC['&'] + 1)} & 31)"
             return X(f"{self.wrapped(left).paren(9)} >> {rt}", 8)
         if op == "#>":
             return X(f"max({self.value_x(left)}, {self.value_x(right)})")
@@ -468,24 +478,25 @@ class ExprTranslator(EvalOrder):
         if isinstance(t, A.MemRef):
             size = t.size
             if t.index is None:
-                return self.expr(t.base)
-            base, index = self.operands([t.base, t.index])
+                return self.num(self.expr(t.base))
+            base, index = map(self.num, self.operands([t.base, t.index]))
             return X(f"{base.paren(9)} + {size} * {index.paren(10)}", 9, wrapped=False)
         if isinstance(t, A.MemberRef):
             return X(_member_addr(self.expr(t).text, t.size), 9, wrapped=False)
         self.unsupported("this address-of (@) form", node)
 
     def x_ObjAddr(self, node) -> X:
-        return X(f"self.object_base() + {self.expr(node.operand).paren(10)}", 9, wrapped=False)
+        return X(f"self.object_base() + {self.num(self.expr(node.operand)).paren(10)}", 9, wrapped=False)
 
     # ------------------------------------------------------------------ lookups
     def x_Lookup(self, node) -> X:
         items = []
         costs = []
         down = node.name.lower().startswith("lookdown")
-        if self.has_effects(node.items):
-            # Spin stops at the matching item; the Python list would evaluate them all
-            self.unsupported(f"a {node.name.lower()} item with side effects", node)
+        if any(self.effects(item).any or self.effects(item).paid for item in node.items[1:]) or \
+                self.effects(node.items[:1]).hoists:
+            # Spin stops at the matching item; the Python list would evaluate (and pay for) them all
+            self.unsupported(f"a {node.name.lower()} item with side effects or a division", node)
         value = self.value(node.value)
         for item in node.items:
             if isinstance(item, A.Range):
@@ -498,8 +509,9 @@ class ExprTranslator(EvalOrder):
             else:
                 items.append(self.value(item))
                 costs.append(self.lookup_item_cost([item], down, False))
-        self.pending_lookups.append(costs)
-        return X(f"spin.{node.name.lower()}({value}, [{', '.join(items)}])")
+        text = f"spin.{node.name.lower()}({value}, [{', '.join(items)}])"
+        self.lookup_costs[text] = costs
+        return X(text)
 
     def x_Range(self, node):
         self.unsupported("a range outside case or lookup", node)

@@ -58,10 +58,11 @@ class Effects:
     writes: frozenset = frozenset()
     calls: bool = False          # runs a method or a built-in that changes something (inline in the Python)
     hoists: bool = False         # part of it becomes statements before the expression
+    paid: bool = False           # a helper pays cycles that depend on values when it runs (a division, a lookup)
 
     def __or__(self, other: "Effects") -> "Effects":
         return Effects(self.reads | other.reads, self.writes | other.writes, self.calls or other.calls,
-                       self.hoists or other.hoists)
+                       self.hoists or other.hoists, self.paid or other.paid)
 
     @property
     def any(self) -> bool:
@@ -70,7 +71,11 @@ class Effects:
 
 NONE = Effects()
 _STRINGS = "v:@strings"         # string() literals in the image: only a write through an address reaches them
-_CALL = Effects(frozenset({HUB, REG}), frozenset({HUB, REG}), calls=True)
+_CALL = Effects(frozenset({HUB, REG}), frozenset({HUB, REG}), calls=True, paid=True)
+_PAID = Effects(paid=True)
+#: operators whose cycles depend on their operands (spinemu.translate.spin pays them when it runs)
+_PAID_BINARY = frozenset(("/", "//"))
+_PAID_UNARY = frozenset((">|",))
 
 
 def overlap(reads, writes) -> bool:
@@ -165,7 +170,7 @@ class EvalOrder:
                 return inner | _CALL
             if name in _HUB_READERS:
                 literal = node.args and all(isinstance(a, A.Builtin) and a.name.lower() == "string" for a in node.args)
-                return inner | Effects(frozenset({_STRINGS if literal else HUB}))
+                return inner | Effects(frozenset({_STRINGS if literal else HUB}), paid=name in ("strsize", "strcomp"))
             return inner
         if t is A.Assign:
             return self.effects(node.value) | self.effects(node.target) | self.writing(node.target)
@@ -180,7 +185,8 @@ class EvalOrder:
             return self.effects([_get(target, p) for p in index_paths(target)])
         if t in (A.Number, A.Float, A.Str, A.KConst, A.ObjConst):
             return NONE
-        e = NONE
+        e = _PAID if (t is A.Binary and node.op in _PAID_BINARY or t is A.Unary and node.op in _PAID_UNARY
+                      or t is A.Lookup) else NONE
         for f in getattr(node, "__dataclass_fields__", ()):
             if f != "pos":
                 v = getattr(node, f)
@@ -303,7 +309,8 @@ class EvalOrder:
         ``reuse``: the text is evaluated more than once (``old = T; T += 1``,
         ``T = f(T)``, read again for the assignment's value), so an index that
         could give another value the second time (it calls a method, or reads
-        what the assignment changes) is saved to a temporary first.
+        what the assignment changes) or pays cycles when it runs (a division)
+        is saved to a temporary first.
         """
         if isinstance(target, A.Paren):
             target = target.expr
@@ -316,7 +323,7 @@ class EvalOrder:
             changed = self.writing(target).writes
             for k, (n, x) in enumerate(zip(nodes, xs)):
                 e = self.effects(n)
-                if x.const is None and not x.saved and (e.calls or overlap(e.reads, changed)):
+                if x.const is None and not x.saved and (e.calls or e.paid or overlap(e.reads, changed)):
                     xs[k] = self.save(x, len(self.hoisted))
         given = target
         for p, x in zip(paths, xs):

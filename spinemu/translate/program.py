@@ -322,7 +322,8 @@ class ObjectTranslator:
         code.raw(f"SPIN_METHODS = {({self.names.attr(m.name): m.index for m in self.cobj.methods})!r}")
         code.raw(f"SPIN_CALL_DEPTHS = {dict(sorted(code.call_depths.items()))!r}")
         if code.lookups:
-            code.raw("# lookup/lookdown lines: cycles per item, of LOOK_DONE, and what a match adds per item")
+            code.raw("# lookup/lookdown lines, each lookup on the line from the left: cycles per item, of")
+            code.raw("# LOOK_DONE, and what a match adds per item")
             code.raw("SPIN_LOOKUPS = {")
             for line, row in sorted(code.lookups.items()):
                 code.raw(f"    {line}: {row!r},")

@@ -210,74 +210,69 @@ def repeat_step(x: int, start: int, stop: int, step: int = 1) -> tuple:
     return wrap(x), stop <= x <= start
 
 
-def _look_cycles(k) -> None:
-    """Pay what a lookup/lookdown that matched item ``k`` (None: no match) costs beyond the static charge.
+def _look_cycles(costs, k) -> None:
+    """Pay what a lookup/lookdown that matched item ``k`` costs beyond the static charge.
 
-    The statement paid for every item and LOOK_DONE; the caller's module lists,
-    per line, each item's cycles, LOOK_DONE's and what a match adds
-    (``SPIN_LOOKUPS``, written by the translator).
+    The statement paid for every item and LOOK_DONE; ``costs`` (the weaver
+    passes the row the translator listed for this call in ``SPIN_LOOKUPS``)
+    gives each item's cycles, LOOK_DONE's and what a match adds.
     """
-    if RT.T is None or k is None:
+    if RT.T is None or costs is None:
         return
-    import sys
-    caller = sys._getframe(3)
-    row = caller.f_globals.get("SPIN_LOOKUPS", {}).get(caller.f_lineno)
-    if row is None:
-        return
-    items, done, found = row
+    items, done, found = costs
     RT.cog.t += found[k] - sum(items[k + 1:]) - done
 
 
-def _look(index: int, items, base: int) -> int:
+def _look(index: int, items, base: int, costs) -> int:
     i = index - base
     for k, item in enumerate(items):
         if isinstance(item, range):
             if 0 <= i < len(item):
-                _look_cycles(k)
+                _look_cycles(costs, k)
                 return item[i]
             i -= len(item)
         else:
             if i == 0:
-                _look_cycles(k)
+                _look_cycles(costs, k)
                 return item
             i -= 1
     return 0
 
 
-def lookup(index: int, items) -> int:
+def lookup(index: int, items, costs=None) -> int:
     """Spin ``lookup(i: a, b, c)``: item ``i`` counting from 1, or 0."""
-    return _look(index, items, 1)
+    return _look(index, items, 1, costs)
 
 
-def lookupz(index: int, items) -> int:
+def lookupz(index: int, items, costs=None) -> int:
     """Spin ``lookupz(i: a, b, c)``: item ``i`` counting from 0, or 0."""
-    return _look(index, items, 0)
+    return _look(index, items, 0, costs)
 
 
-def _find(value: int, items, base: int) -> int:
+def _find(value: int, items, base: int, costs) -> int:
     n = base
     for k, item in enumerate(items):
         if isinstance(item, range):
             if value in item:
-                _look_cycles(k)
+                _look_cycles(costs, k)
                 return n + item.index(value)
             n += len(item)
         else:
             if value == item:
-                _look_cycles(k)
+                _look_cycles(costs, k)
                 return n
             n += 1
     return 0
 
 
-def lookdown(value: int, items) -> int:
+def lookdown(value: int, items, costs=None) -> int:
     """Spin ``lookdown(v: a, b, c)``: the position of ``v`` counting from 1, or 0."""
-    return _find(value, items, 1)
+    return _find(value, items, 1, costs)
 
 
-def lookdownz(value: int, items) -> int:
+def lookdownz(value: int, items, costs=None) -> int:
     """Spin ``lookdownz(v: a, b, c)``: the position of ``v`` counting from 0, or 0."""
-    return _find(value, items, 0)
+    return _find(value, items, 0, costs)
 
 
 def span(low: int, high: int) -> range:

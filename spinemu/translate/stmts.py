@@ -65,7 +65,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.hoisted: list = []
         self.loops: list = []
         self.temps: set = set()
-        self.pending_lookups: list = []
+        self.lookup_costs: dict = {}         # the text of each lookup call: what its items cost
         self.exits: set = set()             # lines that leave their block (return, raise, break, continue)
         self.last_data = b""
         #: stack bytes the enclosing statements keep while this one runs (a repeat count: 4, a case: 8)
@@ -178,11 +178,12 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         line = self.code.line(text, node.pos.line if node is not None else None)
         if self.held:                       # a call at the start of this line: above what the enclosing statements hold
             self.code.call_depths.setdefault(line, self.held)
-        for _ in range(text.count("spin.look")):
-            if self.pending_lookups:                # what each lookup item costs, for the runtime
-                costs = self.pending_lookups.pop(0)
-                self.code.lookups[line] = ([c for c, _ in costs], ceil16(self.T.look_done + 12),
-                                           [f for _, f in costs])
+        rows = []                           # what each lookup's items cost, for the runtime, left to right
+        for call in _lookup_calls(text):
+            costs = self.lookup_costs[call]
+            rows.append(([c for c, _ in costs], ceil16(self.T.look_done + 12), [f for _, f in costs]))
+        if rows:
+            self.code.lookups[line] = rows
         return line
 
     def block(self, stmts) -> tuple:
@@ -560,6 +561,10 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
         elif header is not None:
             self.charge(header, "e", [jump_op(self.T, "CASE_DONE")])
+        else:                               # no branch at all: the selector, then CASE_DONE
+            body_last = self.emit("pass", st)
+            self.charge(body_last, "b", head + [jump_op(self.T, "CASE_DONE")])
+            first = first or body_last
         return first, top or body_last
 
     def case_jumps(self, items) -> dict:
@@ -591,6 +596,33 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         for s in stmts:
             _, last = self.statement(s)
         return last
+
+def _lookup_calls(text: str) -> list:
+    """The ``spin.lookup(...)``-like calls in a line of Python, left to right by where they start."""
+    opened, calls, quote, i = [], [], None, 0     # opened: (start of a call or None, its paren depth)
+    depth = 0
+    while i < len(text):
+        ch = text[i]
+        if quote:
+            if ch == "\\":
+                i += 1
+            elif ch == quote:
+                quote = None
+        elif ch in "'\"":
+            quote = ch
+        elif text.startswith("spin.look", i):
+            opened.append((i, depth + 1))
+            i = text.index("(", i) - 1
+        elif ch == "(":
+            depth += 1
+        elif ch == ")":
+            if opened and opened[-1][1] == depth:
+                start, _ = opened.pop()
+                calls.append((start, text[start:i + 1]))
+            depth -= 1
+        i += 1
+    return [c for _, c in sorted(calls)]
+
 
 def needs_hub_frame(method) -> bool:
     """Does ``method`` need its locals in hub RAM (a local array, ``@local``, ``local[i]``, ``local.byte``)?"""

@@ -11,6 +11,9 @@ tracebacks.  This is how pytest rewrites ``assert`` statements: the file you
 read is the file that runs, plus bookkeeping that does not change what it
 computes.
 
+Each ``spin.lookup``-like call gets its row of ``SPIN_LOOKUPS`` (what its
+items cost) as a third argument.
+
 A line whose calls start at different stack depths (``SPIN_CALL_DEPTHS``
 lists ``(method, depth)`` for it) has each call wrapped as
 ``__spin_call_at(depth, method, args...)`` so the callee's hub frame lands
@@ -109,22 +112,41 @@ def _wrap_calls(stmt, depths: list, k: int = 0) -> int:
     return k
 
 
-def _weave_body(stmts: list, table: dict, depths: dict) -> list:
+def _add_lookup_costs(stmt, rows: list) -> None:
+    """``spin.lookup(v, items)`` -> ``spin.lookup(v, items, costs)``: each lookup of the line gets its row of
+    ``SPIN_LOOKUPS`` (listed from the left, by where each call starts)."""
+    calls = [c for c in _calls_in_order(stmt) if isinstance(c.func, ast.Attribute)
+             and c.func.attr in _LOOKUPS and isinstance(c.func.value, ast.Name) and c.func.value.id == "spin"]
+    calls.sort(key=lambda c: c.col_offset)
+    for call, row in zip(calls, rows):
+        call.args.append(ast.copy_location(ast.Constant(_frozen(row)), call))
+
+
+def _frozen(row):
+    return tuple(_frozen(x) for x in row) if isinstance(row, (list, tuple)) else row
+
+
+_LOOKUPS = frozenset(("lookup", "lookupz", "lookdown", "lookdownz"))
+
+
+def _weave_body(stmts: list, table: dict, depths: dict, lookups: dict) -> list:
     out = []
     calls = None                    # (line, its depths, how many its calls used)
     for s in stmts:
         for field in ("body", "orelse", "finalbody"):
             if isinstance(getattr(s, field, None), list) and not isinstance(s, ast.FunctionDef):
-                setattr(s, field, _weave_body(getattr(s, field), table, depths))
+                setattr(s, field, _weave_body(getattr(s, field), table, depths, lookups))
         if isinstance(s, ast.Try):
             for h in s.handlers:
-                h.body = _weave_body(h.body, table, depths)
+                h.body = _weave_body(h.body, table, depths, lookups)
         listed = depths.get(s.lineno)
         if listed.__class__ is list:
             # the next line of one statement (a value hoisted before it) goes on where this one stopped
             going_on = calls is not None and calls[0] == s.lineno - 1 and calls[1] == listed \
                 and calls[2] < len(listed)
             calls = (s.lineno, listed, _wrap_calls(s, listed, calls[2] if going_on else 0))
+        if s.lineno in lookups:
+            _add_lookup_costs(s, lookups[s.lineno])
         row = table.get(s.lineno)
         if row is None:
             out.append(s)
@@ -163,8 +185,8 @@ def _weave_body(stmts: list, table: dict, depths: dict) -> list:
     return out
 
 
-def _weave_function(fn: ast.FunctionDef, table: dict, depths: dict) -> ast.FunctionDef:
-    fn.body = _weave_body(fn.body, table, depths)
+def _weave_function(fn: ast.FunctionDef, table: dict, depths: dict, lookups: dict) -> ast.FunctionDef:
+    fn.body = _weave_body(fn.body, table, depths, lookups)
     row = table.get(fn.lineno)
     if row is not None and row[1] is not None:
         fn.body.extend(_charge_stmts(row[1], fn.body[-1]))
@@ -186,11 +208,12 @@ def prepare(cls) -> None:
     module.__dict__[_CALL_AT] = spin.call_at
     install(module.__dict__)
     depths = getattr(module, "SPIN_CALL_DEPTHS", {})
+    lookups = getattr(module, "SPIN_LOOKUPS", {})
     for node in tree.body:
         if isinstance(node, ast.ClassDef) and node.name == cls.__name__:
             for item in node.body:
                 if isinstance(item, ast.FunctionDef):
-                    fn = inline_method(_weave_function(item, table, depths), cls)
+                    fn = inline_method(_weave_function(item, table, depths, lookups), cls)
                     code = compile(ast.Module([fn], []), module.__file__, "exec")
                     ns: dict = {}
                     exec(code, module.__dict__, ns)    # defines the woven function (no user strings)
