@@ -88,10 +88,15 @@ class Code:
         entry = self.charges.setdefault(line, {})
         return entry.setdefault(slot, [[], 0])
 
-    def charge(self, line: int, slot: str, ops) -> None:
+    def charge(self, line: int, slot: str, ops, first: bool = False) -> None:
         """Charge a run of bytecodes ``ops`` at ``slot`` of ``line`` (b: before, a: after, e: else/exit,
-        t: each test of a ``while``, p: the statement's own rest, before it stores or returns)."""
-        self._slot(line, slot)[0].extend(ops)
+        t: each test of a ``while``, p: the statement's own rest, before it stores or returns).
+
+        ``first``: these bytecodes run before the ones charged there already
+        (a condition's jump before the first statement of its body).
+        """
+        run = self._slot(line, slot)[0]
+        run[:0 if first else len(run)] = ops
 
     def charge_add(self, line: int, slot: str, cycles: int) -> None:
         """Charge plain cycles (no fetch alignment) at ``slot`` of ``line``."""

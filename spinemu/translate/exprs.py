@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 from ..frontend import ast as A
 from ..frontend.constants import float_bits
-from .order import ASSIGNING_UNARY, EvalOrder, index_nodes
+from .order import ASSIGNING_UNARY, EvalOrder
 
 __all__ = ["X", "ExprTranslator", "PREC"]
 
@@ -388,13 +388,10 @@ class ExprTranslator(EvalOrder):
         value = self.expr(node.value)
         mark = len(self.hoisted)
         text = self.place(node.target, reuse=True)
+        value = self.value_first(node.value, value, node.target, mark, True, reads_target=node.op != ":=")
         if node.op != ":=":
-            if self.disturbs(node.value, [node.target], reorder=True):
-                value = self.save(value, mark)      # Spin computes the value, then reads the target
             op = node.op.upper() if node.op.isalpha() else node.op
             value = self.binop(op, X(text), value)
-        elif self.disturbs(node.value, index_nodes(node.target)):
-            value = self.save(value, mark)      # the index's side effects come first in the Python
         tmp = self.temp("value")
         self.hoisted.append(f"{tmp} = {self.wrapped(value).text}")
         self.hoisted.append(f"{text} = {tmp}")

@@ -121,7 +121,7 @@ class LoopTranslator:
             self.charge_add(brk, "b", jz_taken.rest - jz_not.rest)
             if st.body:
                 body_first, last = self.loop_block(st.body, _LoopInfo("while"))
-                self.charge(body_first, "b", post)
+                self.charge(body_first, "b", post, first=True)
             else:                       # ``repeat until x``: the loop is just its test
                 self.charge(iff, "a", post)
                 last = iff

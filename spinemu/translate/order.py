@@ -58,7 +58,7 @@ class Effects:
     writes: frozenset = frozenset()
     calls: bool = False          # runs a method or a built-in that changes something (inline in the Python)
     hoists: bool = False         # part of it becomes statements before the expression
-    paid: bool = False           # a helper pays cycles that depend on values when it runs (a division, a lookup)
+    paid: bool = False           # cycles are paid when it runs (a division, a lookup, a register read)
 
     def __or__(self, other: "Effects") -> "Effects":
         return Effects(self.reads | other.reads, self.writes | other.writes, self.calls or other.calls,
@@ -156,8 +156,9 @@ class EvalOrder:
                 | self.effects(node.sub)
         if t is A.MemRef:
             return Effects(self.mem_places(node)) | self.effects(node.base) | self.effects(node.index)
-        if t in (A.RegRef, A.SprRef):
-            return Effects(frozenset({REG})) | self.effects([getattr(node, f, None) for f in ("bit", "bit2", "index")])
+        if t in (A.RegRef, A.SprRef):         # a register read pays the rest of its statement (spin_cog._read_at)
+            return Effects(frozenset({REG}), paid=True) | \
+                self.effects([getattr(node, f, None) for f in ("bit", "bit2", "index")])
         if t is A.AbortTrap:
             call = node.call
             return self.effects(call) | (_CALL if isinstance(call, A.NameRef) else NONE)
@@ -320,15 +321,45 @@ class EvalOrder:
         nodes = [_get(target, p) for p in paths]
         xs = self.operands(nodes)
         if reuse:
-            changed = self.writing(target).writes
             for k, (n, x) in enumerate(zip(nodes, xs)):
-                e = self.effects(n)
-                if x.const is None and not x.saved and (e.calls or e.paid or overlap(e.reads, changed)):
+                if x.const is None and not x.saved and self._unstable(n, target):
                     xs[k] = self.save(x, len(self.hoisted))
         given = target
         for p, x in zip(paths, xs):
             given = _with(given, p, Given(getattr(_get(target, p), "pos", None), x))
         return self.expr(given).text
+
+
+    def _unstable(self, index, target) -> bool:
+        """Could ``index`` (of ``target``) give another value, or pay again, if evaluated a second time?"""
+        e = self.effects(index)
+        return e.calls or e.paid or overlap(e.reads, self.writing(target).writes)
+
+    def index_first(self, target, reuse: bool) -> bool:
+        """Does :meth:`place` evaluate an index of ``target`` in a statement of its own (hoisted)?
+
+        Then the index comes before the value in the Python, whatever Python's
+        order in ``T = V`` would be.
+        """
+        nodes = index_nodes(target)
+        return any(self.effects(n).hoists or reuse and self.constant(n) is None and self._unstable(n, target)
+                   for n in nodes)
+
+    def value_first(self, value_node, value, target, mark: int, reuse: bool, reads_target: bool = False):
+        """Save the value of an assignment to ``target`` if Python would not compute it first, as Spin does.
+
+        Spin computes the value, then the target's index, then (``OP=``,
+        ``reads_target``) reads the target.  In ``T[i] = V`` Python computes
+        ``V`` before ``i``, unless the index is hoisted; in ``T[i] OP= V`` it
+        reads ``T[i]`` first.
+        """
+        if value.const is not None or value.saved:
+            return value
+        later = index_nodes(target) + ([target] if reads_target else [])
+        moved = reads_target or self.index_first(target, reuse)
+        if self.disturbs(value_node, later, reorder=moved):
+            return self.save(value, mark)
+        return value
 
 
 class Given(A.Expr):

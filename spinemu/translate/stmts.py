@@ -33,7 +33,7 @@ from ..frontend import ast as A
 from ..frontend.ast import key
 from .costs import Op, call_depths, ceil16, drop_result_delta, price, jump_op, split, split_read
 from .exprs import ExprTranslator, X
-from .order import Given, index_nodes
+from .order import Given
 from .loops import LoopTranslator
 
 __all__ = ["MethodTranslator"]
@@ -164,10 +164,13 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         found = self.objt.long_jumps_at(pos, note)
         return found[k] if k < len(found) else False
 
-    def charge(self, line: int, slot: str, ops) -> None:
-        """Charge ``ops`` at ``slot`` of ``line``; nothing runs after a return, abort, next or quit."""
+    def charge(self, line: int, slot: str, ops, first: bool = False) -> None:
+        """Charge ``ops`` at ``slot`` of ``line``; nothing runs after a return, abort, next or quit.
+
+        ``first``: before what the line pays already (see ``Code.charge``).
+        """
         if line is not None and ops and not (slot == "a" and line in self.exits):
-            self.code.charge(line, slot, list(ops))
+            self.code.charge(line, slot, list(ops), first)
 
     def charge_add(self, line: int, slot: str, cycles: int) -> None:
         if line is not None and cycles and not (slot == "a" and line in self.exits):
@@ -353,8 +356,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
 
     def store(self, target, value_node, value: X, mark: int, reuse: bool = False) -> str:
         text = self.place(target, reuse)
-        if value.const is None and not value.saved and self.disturbs(value_node, index_nodes(target)):
-            value = self.save(value, mark)      # the index's side effects come first in the Python
+        value = self.value_first(value_node, value, target, mark, reuse)
         if self.is_local(target):
             self.hoisted.append(f"{text} = {self.wrapped(value).text}")
         else:
@@ -366,9 +368,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         local = self.is_local(target)
         aug = op in _PY_AUG and not local and not value.boolean
         text = self.place(target, reuse or not aug)
-        if value.const is None and not value.saved and \
-                self.disturbs(value_node, index_nodes(target) + [target], reorder=True):
-            value = self.save(value, mark)      # Python reads the target before the value
+        value = self.value_first(value_node, value, target, mark, reuse or not aug, reads_target=True)
         if aug:
             self.hoisted.append(f"{text} {op}= {value.text}")
             return text
@@ -480,7 +480,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             pre, post = split(ops)
             self.charge(branch_first, "b", pre)
             body_first, body_last = self.block(br.body)
-            self.charge(body_first, "b", post)
+            self.charge(body_first, "b", post, first=True)
             self.charge(header, "e", post)
             if i < last or st.else_body is not None:
                 self.charge(body_last, "a", [jump_op(self.T, "JMP", self.long_jump(br.pos, "to end of if"))])
