@@ -96,7 +96,10 @@ class Code:
         (a condition's jump before the first statement of its body).
         """
         run = self._slot(line, slot)[0]
-        run[:0 if first else len(run)] = ops
+        if first:
+            run[:0] = ops
+        else:
+            run.extend(ops)
 
     def charge_add(self, line: int, slot: str, cycles: int) -> None:
         """Charge plain cycles (no fetch alignment) at ``slot`` of ``line``."""
