@@ -345,8 +345,8 @@ class ExprTranslator(EvalOrder):
                 # `a and b / c` pays for the division
                 sym = "&" if op == "AND" else "|"
                 p = PREC[sym]
-                lt = left.paren(p + 1) if left.boolean else f"bool({left.text})"
-                rt = right.paren(p + 1) if right.boolean else f"bool({right.text})"
+                lt = left.paren(p + 1) if left.boolean else f"bool({self.wrapped(left).text})"
+                rt = right.paren(p + 1) if right.boolean else f"bool({self.wrapped(right).text})"
                 return X(f"{lt} {sym} {rt}", p, boolean=True)
             word = op.lower()
             lp, rp = PREC[word], PREC[word] + 1
