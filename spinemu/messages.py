@@ -89,10 +89,15 @@ NO_METHODS_OR_DAT = "this object has no methods"
 
 # ----------------------------------------------------------------------------- constants
 NEEDS_CONSTANT = "this must be a constant expression"
+CONSTANT_GROUP = ("{what} is not a constant: in a method, '{word}(' starts a constant expression that takes "
+                  "the rest of the expression (as in OpenSpin); put the {word}(...) in parentheses")
+CONSTANT_TOO_LATE = ("'{name}' is not known yet here: it is defined further down from constants defined "
+                     "further down still (constants are read in two passes); move its definition up")
 INTEGER_AND_FLOAT = "cannot mix integer and floating-point values here"
 FLOAT_NOT_ALLOWED = "a floating-point value is not allowed here"
 DIVIDE_BY_ZERO = "division by zero in a constant expression"
 CONSTANT_TOO_BIG = "{value} does not fit in 32 bits"
+OVERRIDE_TOO_SMALL = "a '{size}' override in a '{line}' line: a size override may only make items larger"
 BAD_COUNT = "the count must be between {low} and {high}, not {value}"
 ENUM_NOT_STARTED = "an enumeration needs a '#' start value first"
 BAD_CLOCK = "invalid clock setting: {reason}"

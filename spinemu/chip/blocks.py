@@ -667,10 +667,12 @@ class BlockCompiler:
             b.emit(f"return {b.now(T.tjz[(long_, False)])}")
             b.end = True
             return
-        if op == 0x09:                                  # DJNZ
-            v = b.write(b.off - 4, f"({b.peek()} - 1) & 0xFFFFFFFF")
+        if op == 0x09:                                  # DJNZ: the count is stored back only if it is not 0
+            v = b.let(f"({b.peek()} - 1) & 0xFFFFFFFF")
+            b.touch(b.off - 4)
             self._terminal_rest(b, op)
             b.emit(f"if {v}:")
+            b.emit(f"{b.slot(b.off - 4)} = {v}", 1)
             b.exit_lines(str(target), 1)
             b.emit(f"return {b.now(T.djnz[(long_, True)])}", 1)
             b.off -= 4

@@ -287,8 +287,8 @@ def build_handlers(chip, timing: Timing):
         off, long_ = jump_operand(c)
         i = (c.sp - 4) >> 2
         v = (L[i] - 1) & MASK32
-        L[i] = v
         if v:
+            L[i] = v            # the ROM writes the count back only when it loops again
             c.pc += off
             return T.djnz[(long_, True)]
         c.sp -= 4

@@ -5,8 +5,10 @@ computes values.  Layout rules (Propeller Manual, DAT; observed on OpenSpin
 1.00.81):
 
 * ``byte``/``word``/``long`` data is aligned to its size (zero padding);
-  inside a line, size overrides (``byte 1, word 2``) are not aligned;
-  values are cut to the item size; floats only fit ``long`` items;
+  inside a line, size overrides (``byte 1, word 2``) are not aligned, hold
+  for the rest of the line (``byte 1, word 2, 3`` stores 3 as a word) and
+  may not be smaller than the line's size; values are cut to the item size;
+  floats only fit ``long`` items;
 * an instruction is one aligned long;
 * a label takes the address and size of its line's data; a label alone on a
   line takes the current (unaligned) address and the size of the previous
@@ -223,10 +225,15 @@ class _Assembler:
     # ------------------------------------------------------------------ data
     def data(self, body: Data, cog_here: int, scope, emit: bool) -> bytearray:
         out = bytearray()
+        size = body.size
         for item in body.items:
-            size = item.size or body.size
-            if item.size and item.size > body.size:
-                pass  # OpenSpin accepts larger overrides: the item is just bigger
+            if item.size:
+                # an override holds for the rest of the line; it may not be smaller than the line's size
+                if item.size < body.size:
+                    self.report(msg.OVERRIDE_TOO_SMALL.format(size=_SIZE_WORDS[item.size],
+                                                              line=_SIZE_WORDS[body.size]), item)
+                    raise _Abort()
+                size = item.size
             count = 1
             if item.count is not None:
                 count = to_signed(self.const_now(item.count, cog_here, scope))
@@ -326,6 +333,9 @@ class _Assembler:
 def _field(v: int) -> int:
     """An operand for pasm.encode: negative values pass as negatives (OpenSpin ORs them in)."""
     return to_signed(v)
+
+
+_SIZE_WORDS = {1: "byte", 2: "word", 4: "long"}
 
 
 def _align(hub: int, size: int, out) -> int:

@@ -273,6 +273,7 @@ class MethodCompiler(ExprCompiler):
             code.pos = node.pos
             self.jmp(top, "repeat")
         else:
+            nxt.late = True         # OpenSpin sizes jumps to it one byte more generously (code.py)
             code.mark(top)
             self.loop_body(node.body, _Loop(nxt, end))
             code.mark(nxt)

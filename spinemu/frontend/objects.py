@@ -7,8 +7,11 @@ Each file is read and parsed once, however many times it is used.
 
 CON values (Propeller Manual, CON): ``name = expr`` and enumerations
 (``#start``, ``name``, ``name[skip]``).  The counter starts at 0 in each CON
-section and continues across its lines; definitions may refer to constants
-defined further down and to children's constants (``obj#NAME``).
+section and continues across its lines; definitions may refer to children's
+constants (``obj#NAME``) and to constants defined further down, as far as
+OpenSpin's two passes over the lines allow: ``A = B`` before ``B = 1`` works,
+``A = B`` before ``B = C`` before ``C = 1`` does not, and neither does ``A = B``
+before ``B = obj#C`` (the first pass does not see the children's constants).
 """
 from __future__ import annotations
 
@@ -135,6 +138,8 @@ def _fold_constants(unit: ObjectUnit, errors: list) -> None:
             pending_undefined.setdefault(id(node), node)
             raise NotConstant(node)
         if isinstance(node, ObjConst):
+            if first_pass[0]:
+                raise NotConstant(node)     # OpenSpin's first pass does not see children's constants
             return child_constant(unit, node)
         raise NotConstant(node)
 
@@ -143,9 +148,11 @@ def _fold_constants(unit: ObjectUnit, errors: list) -> None:
     items = _con_items_by_section(spin)
     done: set = set()
     reported: set = set()
-    progress = True
-    while progress:
-        progress = False
+    # OpenSpin reads the CON lines twice, in order: a constant may use one defined further
+    # down only if that one is known by the end of the first pass
+    first_pass = [True]
+    for pass_no in range(2):
+        first_pass[0] = pass_no == 0
         pending_undefined.clear()
         counter: Optional[int] = 0
         section = None
@@ -175,7 +182,7 @@ def _fold_constants(unit: ObjectUnit, errors: list) -> None:
                         _report(errors, spin, exc.node, exc.message, reported)
                         step = None
                 if id(item) not in done and counter is not None:
-                    progress |= _define(table, item.name, Const(counter & 0xFFFFFFFF), item, errors, spin, reported)
+                    _define(table, item.name, Const(counter & 0xFFFFFFFF), item, errors, spin, reported)
                     done.add(id(item))
                 counter = None if counter is None or step is None else counter + step
                 continue
@@ -191,9 +198,12 @@ def _fold_constants(unit: ObjectUnit, errors: list) -> None:
                 continue
             _define(table, item.name, value, item, errors, spin, reported)
             done.add(id(item))
-            progress = True
     for node in pending_undefined.values():
-        _report(errors, spin, node, msg.UNDEFINED.format(name=node.name), reported)
+        if key(node.name) in table:
+            text = msg.CONSTANT_TOO_LATE.format(name=node.name)
+        else:
+            text = msg.UNDEFINED.format(name=node.name)
+        _report(errors, spin, node, text, reported)
 
 
 def _con_items_by_section(spin: SpinFile) -> list:

@@ -120,7 +120,8 @@ def parse_text(source: SourceText, defines=()) -> tuple[SpinFile, list]:
     if not source.text.strip():
         errors.append(Diagnostic(msg.EMPTY_FILE, source.path))
     spin = SpinFile(source.path, source, comments=lexed.comments)
-    parser = Parser(_get_tables(), AstBuilder(source.path))
+    builder = AstBuilder(source.path)
+    parser = Parser(_get_tables(), builder)
 
     def indent_at(tok) -> int:
         text = source.line(tok.line) or ""
@@ -130,6 +131,7 @@ def parse_text(source: SourceText, defines=()) -> tuple[SpinFile, list]:
         return col
 
     def run(tokens, start):
+        builder.in_code = start == "method"
         try:
             return parser.parse(tokens, start)
         except ParseFailure as exc:
