@@ -34,7 +34,7 @@ class Op:
 
     code: int
     rest: int
-    kind: str = ""        # "", "read", "write", "call", "wait", "cog"
+    kind: str = ""        # "", "read", "write", "call", "wait", "cog", "look" (items paid at run time)
     hub: bool = False     # reads or writes hub RAM other cogs may share (VAR, DAT, memory, locks)
 
 
@@ -54,7 +54,7 @@ def chain(ops) -> int | None:
     return sum(ceil16(o.rest + 12) for o in ops[:-1]) + ops[-1].rest
 
 
-_PRIORITY = {"write": 0, "wait": 1, "cog": 2, "call": 3, "read": 4}
+_PRIORITY = {"write": 0, "wait": 1, "cog": 2, "call": 3, "look": 3, "read": 4}
 
 
 def split(ops) -> tuple[list, list]:
@@ -64,13 +64,16 @@ def split(ops) -> tuple[list, list]:
     (the value lands in its last instruction, 4 cycles before the next
     bytecode); a call too (the callee runs after it); a read, a wait, a cog
     start or stop are paid after (the helper uses the cycle at which they
-    start).  Waits are paid by their helper, so they are left out.
+    start), and so is a lookup whose items the runtime pays (``look``, its
+    LOOK_DONE: the items come before it).  Waits are paid by their helper, so
+    they are left out.  A write after a call or such a lookup is paid after
+    them (``outa := f(x)``: the translator pays ``post`` before the store).
     """
     timed = [(i, o) for i, o in enumerate(ops) if o.kind]
     if not timed:
         return list(ops), []
     j, anchor = min(timed, key=lambda io: (_PRIORITY[io[1].kind], io[0]))
-    calls = [i for i, o in timed if o.kind == "call" and i < j]
+    calls = [i for i, o in timed if o.kind in ("call", "look") and i < j]
     if anchor.kind == "write" and calls:
         # ``outa := f(x)``: the call is paid before it runs, the write after the call returns
         # (the translator pays ``post`` between computing the value and storing it)
@@ -142,7 +145,10 @@ def price(T: Timing, data: bytes, run_params: int = 0, inside: bool = True) -> l
     while i < n:
         op = data[i]
         length = instruction_length(data, i)
-        ops.append(Op(op, _rest(T, data, i, op, run_params, inside), _kind(data, i, op), _hub(op, data, i)))
+        kind = _kind(data, i, op)
+        if op == 0x0F and not (ops and 0x10 <= ops[-1].code <= 0x13):
+            kind = "look"       # LOOK_DONE right after the value: a lookup whose items the runtime pays
+        ops.append(Op(op, _rest(T, data, i, op, run_params, inside), kind, _hub(op, data, i)))
         i += length
     return ops
 

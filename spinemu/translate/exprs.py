@@ -182,7 +182,7 @@ class ExprTranslator(EvalOrder):
         if kind == "const":
             return X(f"self.{self.names.attr(node.name)}", const=sym)
         if kind == "method":
-            return self.call_text(node, node.name, [])
+            return self.x_Call(node)
         return self.read_var(kind, sym, node)
 
     def x_ResultRef(self, node) -> X:
@@ -273,35 +273,34 @@ class ExprTranslator(EvalOrder):
 
     # ------------------------------------------------------------------ calls
     def x_Call(self, node) -> X:
-        return self.call_text(node, node.name, node.args)
+        func, args = self.call_parts(node)
+        return X(f"{func}({', '.join(args)})")
 
-    def call_text(self, node, name, args) -> X:
-        kind, _sym = self.lookup(name, node)
-        if kind != "method":
-            self.unsupported(f"a call of '{name}', which is not a method", node)
-        return X(f"self.{self.names.attr(name)}({self.args(args)})")
+    x_ObjCall = x_Call
 
-    def args(self, args) -> str:
-        """Call arguments, left to right as Spin pushes them."""
-        return ", ".join(self.wrapped(x).text for x in self.operands(args))
+    def call_parts(self, node) -> tuple:
+        """``(the method as Python, [its arguments])`` of a call (``f(a)``, ``f``, ``obj[i].f(a)``).
 
-    def x_ObjCall(self, node) -> X:
+        Spin pushes the arguments left to right, then an object index;
+        Python indexes first, so the arguments are saved first where that matters.
+        """
+        if isinstance(node, A.NameRef):
+            node = A.Call(node.pos, node.name, [])
+        if isinstance(node, A.Call):
+            kind, _sym = self.lookup(node.name, node)
+            if kind != "method":
+                self.unsupported(f"a call of '{node.name}', which is not a method", node)
+            return f"self.{self.names.attr(node.name)}", [self.wrapped(x).text for x in self.operands(node.args)]
         method = self.names.child_method(node.obj, node.method)
         if node.index is None or self.constant(node.index) is not None:
-            return X(f"{self.child(node, node.index)}.{method}({self.args(node.args)})")
-        # Spin pushes the arguments, then the index; Python indexes first
+            args = [self.wrapped(x).text for x in self.operands(node.args)]
+            return f"{self.child(node, node.index)}.{method}", args
         *args, index = self.operands(node.args + [node.index], reorder_after=len(node.args))
-        obj = self.child(node, node.index, index)
-        return X(f"{obj}.{method}({', '.join(self.wrapped(a).text for a in args)})")
+        return f"{self.child(node, node.index, index)}.{method}", [self.wrapped(a).text for a in args]
 
     def x_AbortTrap(self, node) -> X:
-        call = node.call
-        if isinstance(call, A.NameRef):
-            call = A.Call(call.pos, call.name, [])
-        x = self.expr(call)
-        func, _, rest = x.text.partition("(")
-        rest = rest[:-1]
-        return X(f"spin.trap({func}" + (f", {rest})" if rest else ")"))
+        func, args = self.call_parts(node.call)
+        return X(f"spin.trap({', '.join([func] + args)})")
 
     # ------------------------------------------------------------------ operators
     def x_Unary(self, node) -> X:
@@ -487,28 +486,73 @@ class ExprTranslator(EvalOrder):
 
     # ------------------------------------------------------------------ lookups
     def x_Lookup(self, node) -> X:
+        """``spin.lookup(i, [a, b, c])``; items Spin might not reach, if they call, assign or pay cycles when
+        they run, are evaluated only when reached (``lambda: self.f(x)``, or a local function for an
+        assignment) and each item is paid as it is reached."""
         items = []
         costs = []
         down = node.name.lower().startswith("lookdown")
-        if any(self.effects(item).any or self.effects(item).paid for item in node.items[1:]) or \
-                self.effects(node.items[:1]).hoists:
-            # Spin stops at the matching item; the Python list would evaluate (and pay for) them all
-            self.unsupported(f"a {node.name.lower()} item with side effects or a division", node)
+        each = self.lazy_items(node)
         value = self.value(node.value)
         for item in node.items:
             if isinstance(item, A.Range):
-                items.append(f"spin.span({self.value(item.low)}, {self.value(item.high)})")
-                costs.append(self.lookup_item_cost([item.low, item.high], down, True))
+                text = f"spin.span({self.value(item.low)}, {self.value(item.high)})" if not each else \
+                    f"spin.span({self.lazy(item.low).text}, {self.lazy(item.high).text})"
+                items.append(self.deferred(item, text) if each else text)
+                costs.append(self.lookup_item_cost([item.low, item.high], down, True, each))
             elif isinstance(item, A.Str) and len(self.obj.char_bytes(item.text)) > 1:
                 for b in self.obj.char_bytes(item.text):
                     items.append(str(b))
-                    costs.append(self.lookup_item_cost([A.Number(item.pos, b, str(b))], down, False))
+                    costs.append(self.lookup_item_cost([A.Number(item.pos, b, str(b))], down, False, each))
             else:
-                items.append(self.value(item))
-                costs.append(self.lookup_item_cost([item], down, False))
+                items.append(self.deferred(item, self.wrapped(self.lazy(item)).text) if each else self.value(item))
+                costs.append(self.lookup_item_cost([item], down, False, each))
         text = f"spin.{node.name.lower()}({value}, [{', '.join(items)}])"
-        self.lookup_costs[text] = costs
+        self.lookup_costs[text] = self.lookup_row(costs, each)
         return X(text)
+
+    def lazy_items(self, node) -> bool:
+        """Must ``node``'s items be evaluated one at a time (one that Spin might not reach calls, assigns or
+        pays cycles when it runs, or the first assigns)?"""
+        return any(self.effects(i).any or self.effects(i).paid for i in node.items[1:]) or \
+            self.effects(node.items[:1]).hoists
+
+    def deferred(self, item, text: str) -> str:
+        """``text`` (an item's value) evaluated only when the lookup reaches it."""
+        e = self.effects(item)
+        if not (e.any or e.paid):
+            return text
+        if text.endswith("()") and text[:-2].isidentifier():
+            return text[:-2]                # a local function already
+        return f"lambda: {text}"
+
+    def lazy(self, node) -> X:
+        """``node`` as Python evaluated only when Python reaches it (a lookup item, a case value).
+
+        Its hoisted statements can't go before the statement that uses it:
+        they go into a local function, written before that statement, whose
+        call is the value (``nonlocal`` names the Python locals it assigns).
+        """
+        outer, self.hoisted = self.hoisted, []
+        try:
+            x = self.expr(node)
+            body = self.hoisted
+        finally:
+            self.hoisted = outer
+        if not body:
+            return x
+        name = self.temp("reached")
+        assigned = self.python_locals(self.effects(node).writes)
+        lines = ([f"nonlocal {', '.join(assigned)}"] if assigned else []) + body + [f"return {self.wrapped(x).text}"]
+        self.hoisted.append((f"def {name}():", lines))
+        return X(f"{name}()")
+
+    def python_locals(self, places) -> list:
+        """The Python names of the method's Python locals among ``places`` (order.py)."""
+        names = {0: self.result_name}
+        for sym in self.frame.values():
+            names[sym.offset] = self.names.local(sym.name)
+        return sorted({names[int(p[2:])] for p in places if p.startswith("l:") and int(p[2:]) in names})
 
     def x_Range(self, node):
         self.unsupported("a range outside case or lookup", node)

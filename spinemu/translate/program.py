@@ -235,7 +235,7 @@ class ObjectTranslator:
         everything between it and its target, other jumps included.
         """
         self._index_spans()
-        return self._jumps.get((pos.line, pos.col, note), [])
+        return list(self._jumps.get((pos.line, pos.col, note), ()))
 
     def _index_spans(self) -> None:
         if self._offsets is None:

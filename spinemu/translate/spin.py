@@ -210,69 +210,74 @@ def repeat_step(x: int, start: int, stop: int, step: int = 1) -> tuple:
     return wrap(x), stop <= x <= start
 
 
-def _look_cycles(costs, k) -> None:
-    """Pay what a lookup/lookdown that matched item ``k`` costs beyond the static charge.
+def _search(key: int, items, costs, down: bool) -> tuple:
+    """Spin's lookup/lookdown search: ``(position of the matching value counting from 0, that value)``,
+    ``(None, 0)`` when nothing matches.
 
-    The statement paid for every item and LOOK_DONE; ``costs`` (the weaver
-    passes the row the translator listed for this call in ``SPIN_LOOKUPS``)
-    gives each item's cycles, LOOK_DONE's and what a match adds.
+    ``key``: lookup's index counting from 0, or lookdown's value.  An item is a
+    value, a ``range`` (``span``) or a function that gives one (an item Spin
+    evaluates only when it reaches it).  ``costs`` (the weaver passes the row
+    the translator listed for this call in ``SPIN_LOOKUPS``) pays what the
+    statement's static charge left to the search:
+
+    * ``(item cycles, LOOK_DONE's, extra per match)``: every item was paid
+      with the statement; a match gives back the items after it and LOOK_DONE;
+    * ``("each", LOOK_DONE's, ((before, after, extra), ...))``: each item is
+      paid as it is reached (cycles before its call or register read, from
+      there on, what a match adds); a match gives back LOOK_DONE.
     """
-    if RT.T is None or costs is None:
-        return
-    items, done, found = costs
-    RT.cog.t += found[k] - sum(items[k + 1:]) - done
-
-
-def _look(index: int, items, base: int, costs) -> int:
-    i = index - base
+    T = RT.T if costs is not None else None
+    each = T is not None and costs[0] == "each"
+    if each:
+        from .runtime import tick
+    position = 0
     for k, item in enumerate(items):
+        if each:
+            before, after, extra = costs[2][k]
+            if before is not None:
+                tick(before)
+        if callable(item):
+            item = item()
+        if each and after is not None:
+            tick(after)
         if isinstance(item, range):
-            if 0 <= i < len(item):
-                _look_cycles(costs, k)
-                return item[i]
-            i -= len(item)
+            at = item.index(key) if down and key in item else (key - position if not down else None)
+            hit = at is not None and 0 <= at < len(item)
+            value = item[at] if hit else 0
+            size = len(item)
         else:
-            if i == 0:
-                _look_cycles(costs, k)
-                return item
-            i -= 1
-    return 0
+            hit = key == item if down else key == position
+            at, value, size = 0, item, 1
+        if hit:
+            if each:
+                RT.cog.t += extra - costs[1]
+            elif T is not None:
+                RT.cog.t += costs[2][k] - sum(costs[0][k + 1:]) - costs[1]
+            return position + at, value
+        position += size
+    return None, 0
 
 
 def lookup(index: int, items, costs=None) -> int:
     """Spin ``lookup(i: a, b, c)``: item ``i`` counting from 1, or 0."""
-    return _look(index, items, 1, costs)
+    return _search(index - 1, items, costs, False)[1]
 
 
 def lookupz(index: int, items, costs=None) -> int:
     """Spin ``lookupz(i: a, b, c)``: item ``i`` counting from 0, or 0."""
-    return _look(index, items, 0, costs)
-
-
-def _find(value: int, items, base: int, costs) -> int:
-    n = base
-    for k, item in enumerate(items):
-        if isinstance(item, range):
-            if value in item:
-                _look_cycles(costs, k)
-                return n + item.index(value)
-            n += len(item)
-        else:
-            if value == item:
-                _look_cycles(costs, k)
-                return n
-            n += 1
-    return 0
+    return _search(index, items, costs, False)[1]
 
 
 def lookdown(value: int, items, costs=None) -> int:
     """Spin ``lookdown(v: a, b, c)``: the position of ``v`` counting from 1, or 0."""
-    return _find(value, items, 1, costs)
+    found = _search(value, items, costs, True)[0]
+    return 0 if found is None else found + 1
 
 
 def lookdownz(value: int, items, costs=None) -> int:
     """Spin ``lookdownz(v: a, b, c)``: the position of ``v`` counting from 0, or 0."""
-    return _find(value, items, 0, costs)
+    found = _search(value, items, costs, True)[0]
+    return 0 if found is None else found
 
 
 def span(low: int, high: int) -> range:

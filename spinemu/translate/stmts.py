@@ -31,7 +31,7 @@ from ..compiler.code import CodeBuffer, Label
 from ..compiler import stmts as cstmts
 from ..frontend import ast as A
 from ..frontend.ast import key
-from .costs import Op, call_depths, ceil16, drop_result_delta, price, jump_op, split, split_read
+from .costs import Op, call_depths, ceil16, chain, drop_result_delta, price, jump_op, split, split_read
 from .exprs import ExprTranslator, X
 from .order import Given
 from .loops import LoopTranslator
@@ -66,6 +66,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.loops: list = []
         self.temps: set = set()
         self.lookup_costs: dict = {}         # the text of each lookup call: what its items cost
+        self._lazy = None
         self.exits: set = set()             # lines that leave their block (return, raise, break, continue)
         self.last_data = b""
         #: stack bytes the enclosing statements keep while this one runs (a repeat count: 4, a case: 8)
@@ -97,10 +98,39 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
 
     # ------------------------------------------------------------------ costs
     def piece(self, fn, loop_count: bool = False, **kw) -> list:
-        """Price the bytecode the compiler makes for ``fn()`` (a statement or expression)."""
+        """Price the bytecode the compiler makes for ``fn()`` (a statement or expression).
+
+        A lookup whose items are evaluated one by one at run time (see
+        ``x_Lookup``) is priced without its items: the runtime pays each item
+        it reaches.  ``last_data`` keeps the whole bytecode (where its calls go).
+        """
+        lazy = self.lazy_lookups()
+        if lazy:
+            self.last_data = self._compiled(fn, loop_count)
+            kept = [n.items for n in lazy]
+            for n in lazy:
+                n.items = []
+            try:
+                data = self._compiled(fn, loop_count)
+            finally:
+                for n, items in zip(lazy, kept):
+                    n.items = items
+            return price(self.T, data, **kw)
+        data = self._compiled(fn, loop_count)
+        self.last_data = data
+        return price(self.T, data, **kw)
+
+    def lazy_lookups(self) -> list:
+        """The lookups of this method whose items are evaluated one by one at run time (see ``x_Lookup``)."""
+        if self._lazy is None:
+            self._lazy = [n for n in A.walk(self.method.body) if isinstance(n, A.Lookup) and self.lazy_items(n)]
+        return self._lazy
+
+    def _compiled(self, fn, loop_count: bool) -> bytes:
         mc = self.mc
         saved = mc.code, mc.loops
         mc.code = CodeBuffer()
+        mc.code.pos = self.cur_pos          # (a string's push has a place; the string pool does not)
         nxt, end = Label(), Label()
         mc.loops = [cstmts._Loop(nxt, end, count=loop_count)]
         try:
@@ -111,9 +141,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             spans, _ = mc.code.layout(self.objt.offset_of(self.cur_pos, self.method))
         finally:
             mc.code, mc.loops = saved
-        data = b"".join(s.data for s in spans if s.pos is not None or s.note != "string")   # not the pool
-        self.last_data = data
-        return price(self.T, data, **kw)
+        return b"".join(s.data for s in spans if s.pos is not None or s.note != "string")   # not the pool
 
     def callee(self, data, i: int) -> tuple:
         """``(parameter count, Python name)`` of the method the CALL/CALL_OBJ at ``data[i]`` calls."""
@@ -150,14 +178,30 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
     def expr_ops(self, node) -> list:
         return self.piece(lambda: self.mc.expr(node))
 
-    def lookup_item_cost(self, exprs, down: bool, is_range: bool) -> tuple:
-        """``(cycles of the item, extra cycles when it matches)`` of one lookup/lookdown item."""
+    def lookup_item_cost(self, exprs, down: bool, is_range: bool, each: bool = False) -> tuple:
+        """``(cycles of the item, extra cycles when it matches)`` of one lookup/lookdown item.
+
+        ``each`` (items paid one by one at run time): ``(cycles before its call
+        or register read, cycles from there on, extra when it matches)``.
+        """
         T = self.T
         ops = [o for e in exprs for o in self.expr_ops(e)]
         name = ("lookdown" if down else "lookup") + ("_range" if is_range else "_value")
         table = getattr(T, name)
+        if each:
+            ops.append(Op(0x10, table[False]))
+            cut = next((k + (o.kind == "call") for k, o in enumerate(ops) if o.kind in ("call", "read", "look")),
+                       len(ops))
+            return chain(ops[:cut]), chain(ops[cut:]), table[True] - table[False]
         found, missed = ceil16(table[True] + 12), ceil16(table[False] + 12)
         return sum(ceil16(o.rest + 12) for o in ops) + missed, found - missed
+
+    def lookup_row(self, costs: list, each: bool) -> tuple:
+        """A lookup's row of ``SPIN_LOOKUPS`` (see spinemu.translate.spin.lookup)."""
+        done = ceil16(self.T.look_done + 12)
+        if each:
+            return ("each", done, tuple(costs))
+        return ([c for c, _ in costs], done, [f for _, f in costs])
 
     def long_jump(self, pos, note: str, k: int = 0) -> bool:
         """Is the ``k``-th jump the compiler made at ``pos`` with ``note`` the two-byte form (compiled object)?"""
@@ -177,14 +221,20 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             self.code.charge_add(line, slot, cycles)
 
     # ------------------------------------------------------------------ emitting
-    def emit(self, text: str, node=None) -> int:
+    def emit(self, text, node=None) -> int:
+        """Write one line (or a hoisted block: ``(header, [lines or blocks])``); its (first) line number."""
+        if isinstance(text, tuple):
+            header, body = text
+            first = self.emit(header, node)
+            self.code.indent += 1
+            for item in body:
+                self.emit(item, node)
+            self.code.indent -= 1
+            return first
         line = self.code.line(text, node.pos.line if node is not None else None)
         if self.held:                       # a call at the start of this line: above what the enclosing statements hold
             self.code.call_depths.setdefault(line, self.held)
-        rows = []                           # what each lookup's items cost, for the runtime, left to right
-        for call in _lookup_calls(text):
-            costs = self.lookup_costs[call]
-            rows.append(([c for c, _ in costs], ceil16(self.T.look_done + 12), [f for _, f in costs]))
+        rows = [self.lookup_costs[call] for call in _lookup_calls(text)]   # for the runtime, left to right
         if rows:
             self.code.lookups[line] = rows
         return line
@@ -512,14 +562,18 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         head = [Op(0x37 + imm, self.T.push_imm[imm])] + self.expr_ops(st.value)
         items = [it for it in st.items if it.values is not None]
         other = next((it for it in st.items if it.values is None), None)
-        jump_long = self.case_jumps(items)
         header = top = body_last = None
-        for n, item in enumerate(items):
-            conds, ops, per_value = [], [], []
+        tests = []
+        for item in items:
+            conds, per_value = [], []
+            # is each compare's jump to the body the two-byte form? (as the compiler laid it out)
+            long_values = list(self.objt.long_jumps_at(item.pos, "case value"))
+            long_ranges = list(self.objt.long_jumps_at(item.pos, "case range"))
             for v in item.values:
                 ops = []
                 if isinstance(v, A.Range):
-                    lo, hi = self.value(v.low), self.value(v.high)
+                    # a value Spin reaches only when the ones before it did not match: lazy()
+                    lo, hi = self.wrapped(self.lazy(v.low)).text, self.wrapped(self.lazy(v.high)).text
                     clo, chi = self.constant(v.low), self.constant(v.high)
                     if clo is not None and chi is not None and clo > chi:
                         lo, hi = hi, lo
@@ -528,13 +582,23 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                     else:
                         conds.append(f"spin.within({sel}, {lo}, {hi})")
                     ops += self.expr_ops(v.low) + self.expr_ops(v.high) + \
-                        [jump_op(self.T, "CASE_RANGE", jump_long[id(v)])]
+                        [jump_op(self.T, "CASE_RANGE", long_ranges.pop(0) if long_ranges else False)]
+                    per_value.append(ops)
+                elif isinstance(v, A.Str) and len(self.obj.char_bytes(v.text)) > 1:
+                    for b in self.obj.char_bytes(v.text):   # "abc": one value per character, as compiled
+                        conds.append(f"{sel} == {b}")
+                        per_value.append(self.expr_ops(A.Number(v.pos, b, str(b))) + [
+                            jump_op(self.T, "CASE_VALUE", long_values.pop(0) if long_values else False)])
                 else:
-                    conds.append(f"{sel} == {self.value(v)}")
-                    ops += self.expr_ops(v) + [jump_op(self.T, "CASE_VALUE", jump_long[id(v)])]
-                per_value.append(ops)
-            if self.hoisted:
-                self.unsupported("a case value with side effects", item)
+                    conds.append(f"{sel} == {self.wrapped(self.lazy(v)).text}")
+                    ops += self.expr_ops(v) + [jump_op(self.T, "CASE_VALUE", long_values.pop(0) if long_values else False)]
+                    per_value.append(ops)
+            tests.append((conds, per_value))
+        for text in self.hoisted:           # local functions of values that assign (lazy())
+            ln = self.emit(text, st)
+            first = first or ln
+        self.hoisted = []
+        for n, (item, (conds, per_value)) in enumerate(zip(items, tests)):
             cond = " or ".join(conds)
             self.code.comments_before(item.pos.line)
             header = self.emit(f"{'if' if n == 0 else 'elif'} {cond}:", item)
@@ -566,21 +630,6 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             self.charge(body_last, "b", head + [jump_op(self.T, "CASE_DONE")])
             first = first or body_last
         return first, top or body_last
-
-    def case_jumps(self, items) -> dict:
-        """For each case value: is its jump to the branch body the two-byte form (farther than 63 bytes)?
-
-        The compiler's layout decides (compare jumps in between may be long
-        themselves), so the sizes are read from the compiled object.
-        """
-        result = {}
-        for item in items:
-            values = self.objt.long_jumps_at(item.pos, "case value")
-            ranges = self.objt.long_jumps_at(item.pos, "case range")
-            for v in item.values:
-                found = ranges if isinstance(v, A.Range) else values
-                result[id(v)] = found.pop(0) if found else False
-        return result
 
     @contextmanager
     def holding(self, n: int):

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import random
 
-__all__ = ["program"]
+__all__ = ["program", "generate"]
 
 _BINARY = ["+", "-", "*", "/", "//", "&", "|", "^", "<<", ">>", "~>", "<-", "->", "><", "#>", "<#", "**",
            "==", "<>", "<", ">", "=<", "=>", "AND", "OR"]
@@ -151,3 +151,9 @@ def program(seed: int) -> str:
               "PRI tick", "  calls += 10", "  c := c * 3 + 1", "  return c",
               "PRI twice(x, y)", "  b := x", "  return x * 2 - y"]
     return "\n".join(lines) + "\n"
+
+
+def generate(seed: int):
+    """Program ``seed`` as a :class:`tests.fuzz.generator.Program` (one file; results in ``r[]``)."""
+    from .generator import Program, Results
+    return Program(seed, {"main.spin": program(seed)}, Results("r", 0, 32))
