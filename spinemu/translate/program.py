@@ -205,14 +205,12 @@ class ObjectTranslator:
         if table is None:
             mc = _StringTracker(self.oc, method)
             buf = mc.compile()
-            info = self.infos[key(method.name)]
-            _spans, end = buf.layout(info.offset)
-            pool = end - sum(len(s) for s in buf.strings)
-            offsets, run = [], pool
-            for s in buf.strings:
-                offsets.append(run)
-                run += len(s)
-            table = {nid: offsets[i] for nid, i in mc.string_index.items()}
+            spans, _end = buf.layout(self.infos[key(method.name)].offset)
+            # each push of a string's address, in the order compiled: the compiler's own pool
+            # addresses (some strings share one, as in OpenSpin: compiler/code.py)
+            pushes = [((sp.data[1] & 0x7F) << 8) | sp.data[2] for sp in spans
+                      if sp.note == "string" and sp.pos is not None]
+            table = {nid: pushes[i] for nid, i in mc.string_index.items()}
             self._strings[key(method.name)] = table
         return table[id(node)]
 
