@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 from ..frontend import ast as A
 from ..frontend.constants import float_bits
-from .order import ASSIGNING_UNARY, EvalOrder
+from .order import _EVENT_BUILTINS, ASSIGNING_UNARY, EvalOrder
 
 __all__ = ["X", "ExprTranslator", "PREC"]
 
@@ -48,6 +48,14 @@ class X:
     def paren(self, prec: int) -> str:
         return f"({self.text})" if self.prec < prec else self.text
 
+
+class Event(str):
+    """A line that makes one of its statement's timed events (a call, a register read or write, a wait,
+    a cog start or stop, a lookup paid item by item): see ``MethodTranslator.timed_statement``."""
+
+
+#: registers whose value changes with time: a read-modify-write of one is timed by its read
+TIME_REGISTERS = frozenset(("CNT", "INA", "INB", "PHSA", "PHSB"))
 
 _CMP = {"==": "==", "<>": "!=", "<": "<", ">": ">", "=<": "<=", "=>": ">="}
 _PY_BIN = {"+": "+", "-": "-", "*": "*", "&": "&", "|": "|", "^": "^"}
@@ -109,6 +117,41 @@ class ExprTranslator(EvalOrder):
         if x.wrapped:
             return x
         return X(f"wrap({x.text})")
+
+    # ------------------------------------------------------------------ timed events
+    def event(self, x: X, node) -> X:
+        """In a statement with several timed events (``timed_statement``), the event ``node`` on a line of
+        its own: ``value = self.f(a)``; else ``x`` as it is."""
+        if not self.event_mode or node is self.top_node or self.placing:
+            return x
+        tmp = self.temp("value")
+        self.hoisted.append(Event(f"{tmp} = {x.text}"))
+        return X(tmp, wrapped=x.wrapped, boolean=x.boolean, saved=True)
+
+    def is_event(self, node) -> bool:
+        """Is evaluating ``node`` itself a timed event (its last bytecode a call, a wait, a cog start ...)?"""
+        t = type(node)
+        if t in (A.Call, A.ObjCall, A.AbortTrap):
+            return True
+        if t is A.NameRef:
+            return self.lookup(node.name, node)[0] == "method"
+        if t is A.Builtin:
+            return node.name.lower() in _EVENT_BUILTINS
+        return t in (A.RegRef, A.SprRef) or t is A.Lookup and self.lazy_items(node)
+
+    def line(self, text: str, event: bool) -> str:
+        """A hoisted line; an ``Event`` line if it makes a timed event in a statement written event by event."""
+        return Event(text) if event and self.event_mode else text
+
+    def store_event(self, target, reads: bool = False) -> bool:
+        """Is the line that stores to ``target`` (``reads``: the line that reads it, in a read-modify-write
+        written as two lines) the timed event of the assignment?  A register's write is; a
+        read-modify-write of a register that changes with time (``phsa += 1``) is timed by its read."""
+        if isinstance(target, A.Paren):
+            target = target.expr
+        if isinstance(target, A.RegRef):
+            return reads == (target.name.upper() in TIME_REGISTERS)
+        return isinstance(target, A.SprRef) and not reads
 
     def num(self, x: X) -> X:
         """``x`` as a number: a comparison becomes Spin's TRUE (-1) or FALSE; other values stay as they are."""
@@ -239,14 +282,14 @@ class ExprTranslator(EvalOrder):
     def x_RegRef(self, node) -> X:
         name = node.name.upper()
         if node.bit is None:
-            return X(f"cog.{name}")
+            return self.event(X(f"cog.{name}"), node)
         if node.bit2 is None:
-            return X(f"cog.{name}[{self.num(self.expr(node.bit)).text}]")
+            return self.event(X(f"cog.{name}[{self.num(self.expr(node.bit)).text}]"), node)
         hi, lo = map(self.num, self.operands([node.bit, node.bit2]))
-        return X(f"cog.{name}[{hi.text}:{lo.text}]")
+        return self.event(X(f"cog.{name}[{hi.text}:{lo.text}]"), node)
 
     def x_SprRef(self, node) -> X:
-        return X(f"cog.spr[{self.num(self.expr(node.index)).text}]")
+        return self.event(X(f"cog.spr[{self.num(self.expr(node.index)).text}]"), node)
 
     def child(self, node, index, x: X = None) -> str:
         """The child object ``node.obj`` (``obj[i]``); an array named without an index is its element 0, as in Spin.
@@ -274,7 +317,7 @@ class ExprTranslator(EvalOrder):
     # ------------------------------------------------------------------ calls
     def x_Call(self, node) -> X:
         func, args = self.call_parts(node)
-        return X(f"{func}({', '.join(args)})")
+        return self.event(X(f"{func}({', '.join(args)})"), node)
 
     x_ObjCall = x_Call
 
@@ -300,7 +343,7 @@ class ExprTranslator(EvalOrder):
 
     def x_AbortTrap(self, node) -> X:
         func, args = self.call_parts(node.call)
-        return X(f"spin.trap({', '.join([func] + args)})")
+        return self.event(X(f"spin.trap({', '.join([func] + args)})"), node)
 
     # ------------------------------------------------------------------ operators
     def x_Unary(self, node) -> X:
@@ -392,8 +435,10 @@ class ExprTranslator(EvalOrder):
             op = node.op.upper() if node.op.isalpha() else node.op
             value = self.binop(op, X(text), value)
         tmp = self.temp("value")
-        self.hoisted.append(f"{tmp} = {self.wrapped(value).text}")
-        self.hoisted.append(f"{text} = {tmp}")
+        reads = node.op != ":="
+        self.hoisted.append(self.line(f"{tmp} = {self.wrapped(value).text}", reads and self.store_event(node.target, True)))
+        self.hoisted.append(self.line(f"{text} = {tmp}", self.store_event(node.target, False) if reads else
+                                      isinstance(node.target, (A.RegRef, A.SprRef))))
         return X(tmp, saved=True)
 
     def x_PreOp(self, node) -> X:
@@ -406,8 +451,8 @@ class ExprTranslator(EvalOrder):
             new = {"~": f"spin.sign_extend_byte({old})", "~~": f"spin.sign_extend_word({old})",
                    "?": f"spin.random_forward({old})", "++": f"wrap({old} + 1)", "--": f"wrap({old} - 1)"}[node.op]
             tmp = self.temp("value")
-            self.hoisted.append(f"{tmp} = {new}")
-            self.hoisted.append(f"{old} = {tmp}")
+            self.hoisted.append(self.line(f"{tmp} = {new}", self.store_event(node.target, True)))
+            self.hoisted.append(self.line(f"{old} = {tmp}", self.store_event(node.target)))
             return X(tmp, saved=True)
         text = self.step(node.target, node.op, reuse=True)
         return self.reread(node.target, text)
@@ -428,15 +473,15 @@ class ExprTranslator(EvalOrder):
             if self.narrow(node.target) or isinstance(node.target, A.RegRef):
                 text = self.place(node.target, reuse=True)
                 tmp = self.temp("value")
-                self.hoisted.append(f"{tmp} = spin.random_reverse({text})")
-                self.hoisted.append(f"{text} = {tmp}")
+                self.hoisted.append(self.line(f"{tmp} = spin.random_reverse({text})", self.store_event(node.target, True)))
+                self.hoisted.append(self.line(f"{text} = {tmp}", self.store_event(node.target)))
                 return X(tmp, saved=True)
             text = self.step(node.target, node.op, post=True, reuse=True)
             return self.reread(node.target, text)
         text = self.place(node.target, reuse=True)
         old = self.temp("old_" + _short(node.target))
-        self.hoisted.append(f"{old} = {text}")
-        self.step(node.target, node.op, post=True, text=text)
+        self.hoisted.append(self.line(f"{old} = {text}", self.store_event(node.target, True)))
+        self.step(node.target, node.op, post=True, text=text, timed=self.store_event(node.target))
         return X(old, saved=True)
 
     def reread(self, target, text: str) -> X:
@@ -509,7 +554,7 @@ class ExprTranslator(EvalOrder):
                 costs.append(self.lookup_item_cost([item], down, False, each))
         text = f"spin.{node.name.lower()}({value}, [{', '.join(items)}])"
         self.lookup_costs[text] = self.lookup_row(costs, each)
-        return X(text)
+        return self.event(X(text), node) if each else X(text)
 
     def lazy_items(self, node) -> bool:
         """Must ``node``'s items be evaluated one at a time (one that Spin might not reach calls, assigns or
@@ -534,11 +579,12 @@ class ExprTranslator(EvalOrder):
         call is the value (``nonlocal`` names the Python locals it assigns).
         """
         outer, self.hoisted = self.hoisted, []
+        mode, self.event_mode = self.event_mode, False     # its events are not the statement's
         try:
             x = self.expr(node)
             body = self.hoisted
         finally:
-            self.hoisted = outer
+            self.hoisted, self.event_mode = outer, mode
         if not body:
             return x
         name = self.temp("reached")

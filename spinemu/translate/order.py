@@ -32,7 +32,7 @@ element is its array (an index is assumed to stay inside its array).
 from __future__ import annotations
 
 import copy
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ..frontend import ast as A
 
@@ -46,6 +46,9 @@ PURE_BUILTINS = frozenset({"constant", "float", "round", "trunc", "string", "str
                            "clkfreq", "clkmode", "chipver"})
 #: built-ins that read hub RAM
 _HUB_READERS = frozenset({"strsize", "strcomp", "clkfreq", "clkmode", "chipver"})
+#: built-ins whose bytecode is a timed event (costs.py): waits, cog starts and stops, clock changes
+_EVENT_BUILTINS = frozenset(("waitcnt", "waitpeq", "waitpne", "waitvid", "cogstop", "cognew", "coginit",
+                             "clkset", "reboot"))
 #: the unary operators that assign their variable (``~x`` sign-extends x in place)
 ASSIGNING_UNARY = frozenset({"~", "~~", "?"})
 
@@ -59,10 +62,11 @@ class Effects:
     calls: bool = False          # runs a method or a built-in that changes something (inline in the Python)
     hoists: bool = False         # part of it becomes statements before the expression
     paid: bool = False           # cycles are paid when it runs (a division, a lookup, a register read)
+    events: bool = False         # a timed event: a call, a register read or write, a wait, a cog start ...
 
     def __or__(self, other: "Effects") -> "Effects":
         return Effects(self.reads | other.reads, self.writes | other.writes, self.calls or other.calls,
-                       self.hoists or other.hoists, self.paid or other.paid)
+                       self.hoists or other.hoists, self.paid or other.paid, self.events or other.events)
 
     @property
     def any(self) -> bool:
@@ -71,7 +75,7 @@ class Effects:
 
 NONE = Effects()
 _STRINGS = "v:@strings"         # string() literals in the image: only a write through an address reaches them
-_CALL = Effects(frozenset({HUB, REG}), frozenset({HUB, REG}), calls=True, paid=True)
+_CALL = Effects(frozenset({HUB, REG}), frozenset({HUB, REG}), calls=True, paid=True, events=True)
 _PAID = Effects(paid=True)
 #: operators whose cycles depend on their operands (spinemu.translate.spin pays them when it runs)
 _PAID_BINARY = frozenset(("/", "//"))
@@ -157,7 +161,7 @@ class EvalOrder:
         if t is A.MemRef:
             return Effects(self.mem_places(node)) | self.effects(node.base) | self.effects(node.index)
         if t in (A.RegRef, A.SprRef):         # a register read pays the rest of its statement (spin_cog._read_at)
-            return Effects(frozenset({REG}), paid=True) | \
+            return Effects(frozenset({REG}), paid=True, events=True) | \
                 self.effects([getattr(node, f, None) for f in ("bit", "bit2", "index")])
         if t is A.AbortTrap:
             call = node.call
@@ -168,7 +172,7 @@ class EvalOrder:
             name = node.name.lower()
             inner = self.effects(node.args or [])
             if name not in PURE_BUILTINS:
-                return inner | _CALL
+                return inner | (_CALL if name in _EVENT_BUILTINS else replace(_CALL, events=False))
             if name in _HUB_READERS:
                 literal = node.args and all(isinstance(a, A.Builtin) and a.name.lower() == "string" for a in node.args)
                 return inner | Effects(frozenset({_STRINGS if literal else HUB}), paid=name in ("strsize", "strcomp"))
@@ -188,6 +192,8 @@ class EvalOrder:
             return NONE
         e = _PAID if (t is A.Binary and node.op in _PAID_BINARY or t is A.Unary and node.op in _PAID_UNARY
                       or t is A.Lookup) else NONE
+        if t is A.Lookup and self.lazy_items(node):
+            e = replace(e, events=True)
         for f in getattr(node, "__dataclass_fields__", ()):
             if f != "pos":
                 v = getattr(node, f)
@@ -203,7 +209,7 @@ class EvalOrder:
         if t in (A.NameRef, A.ResultRef, A.MemberRef):
             return Effects(writes=self.places(target), hoists=True)
         if t in (A.RegRef, A.SprRef):
-            return Effects(writes=frozenset({REG}), hoists=True)
+            return Effects(writes=frozenset({REG}), hoists=True, events=True)
         return Effects(writes=self.mem_places(target), hoists=True)
 
     def places(self, node) -> frozenset:
@@ -258,12 +264,13 @@ class EvalOrder:
         """
         mine, theirs = self.effects(node), self.effects(later)
         if reorder:
-            if mine.calls and (theirs.calls or _hub_places(theirs.reads)):
-                return True                     # its call would come after their reads or calls
+            if (mine.calls or mine.paid) and (theirs.calls or theirs.paid or _hub_places(theirs.reads)):
+                return True                     # its call, or what it pays, would come after theirs
             return overlap(mine.reads, theirs.writes)
-        if not theirs.hoists:
+        if not (theirs.hoists or self.event_mode and theirs.events):
             return False
-        return mine.calls or overlap(mine.reads, theirs.writes)
+        # their statements come first: a call, a division ... of its own must not move after them
+        return mine.calls or mine.paid or overlap(mine.reads, theirs.writes)
 
     def save(self, x, at: int):
         """Save ``x`` to a temporary whose statement goes at ``at`` in the hoisted list; the temporary's X."""
@@ -317,7 +324,7 @@ class EvalOrder:
             target = target.expr
         paths = index_paths(target)
         if not paths:
-            return self.expr(target).text
+            return self._target_text(target)
         nodes = [_get(target, p) for p in paths]
         xs = self.operands(nodes)
         if reuse:
@@ -327,7 +334,15 @@ class EvalOrder:
         given = target
         for p, x in zip(paths, xs):
             given = _with(given, p, Given(getattr(_get(target, p), "pos", None), x))
-        return self.expr(given).text
+        return self._target_text(given)
+
+    def _target_text(self, target) -> str:
+        """A target's text (not a read of it: a register named here is no timed event)."""
+        saved, self.placing = self.placing, True
+        try:
+            return self.expr(target).text
+        finally:
+            self.placing = saved
 
 
     def _unstable(self, index, target) -> bool:

@@ -32,8 +32,8 @@ from ..compiler import stmts as cstmts
 from ..frontend import ast as A
 from ..frontend.ast import key
 from .costs import Op, call_depths, ceil16, chain, drop_result_delta, price, jump_op, split, split_read
-from .exprs import ExprTranslator, X
-from .order import Given
+from .exprs import Event, ExprTranslator, X
+from .order import _EVENT_BUILTINS, Given
 from .loops import LoopTranslator
 
 __all__ = ["MethodTranslator"]
@@ -66,6 +66,10 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.loops: list = []
         self.temps: set = set()
         self.lookup_costs: dict = {}         # the text of each lookup call: what its items cost
+        self.event_mode = False              # one line per timed event (timed_statement)
+        self.placing = False                 # translating an assignment's target (not a read of it)
+        self.top_node = None
+        self.event_lines: list = []
         self._lazy = None
         self.exits: set = set()             # lines that leave their block (return, raise, break, continue)
         self.last_data = b""
@@ -260,46 +264,93 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         return method(st)
 
     def flush(self, main, node) -> tuple:
-        """Emit the hoisted lines and ``main`` (a line or None); ``(first, last)``."""
+        """Emit the hoisted lines and ``main`` (a line or None); ``(first, last)``.
+
+        ``self.event_lines`` gets the numbers of the lines that make a timed
+        event (``Event`` lines, see :meth:`timed_statement`), in order.
+        """
         lines = self.hoisted + ([main] if main else [])
         self.hoisted = []
         first = last = None
+        self.event_lines = []
         for text in lines:
             last = self.emit(text, node)
             first = first or last
-
+            if isinstance(text, Event):
+                self.event_lines.append(last)
         if first is None:
             first = last = self.emit("pass", node)
         return first, last
+
+    @contextmanager
+    def timed_statement(self, ops, top=None):
+        """Translate a statement whose bytecodes ``ops`` have several timed events, one line per event.
+
+        One charge before a statement and one after its call (or read) place
+        one event at its cycle.  A statement with more (``x := f(a) + g(b)``,
+        ``outa := ina + f(x)``, two register reads) is written with each event
+        on a line of its own (``value = self.f(a)``), in Spin's order, and
+        each line pays the bytecodes from the event before it (see
+        :meth:`charge_events`).  ``top``: the statement's own expression when
+        it is an event itself (a call as a statement): it stays on the last line.
+        """
+        saved = self.event_mode, self.top_node
+        self.event_mode = not _one_event(ops)
+        self.top_node = top
+        try:
+            yield self.event_mode
+        finally:
+            self.event_mode, self.top_node = saved
+
+    def charge_events(self, ops, first: int, last: int) -> bool:
+        """Charge a statement written by :meth:`timed_statement`: each event line pays the bytecodes since
+        the event before it, what follows the last event is paid after it.  False if the lines do not
+        match the events (the caller charges the statement as one)."""
+        runs, kinds = _segments(ops)
+        lines = self.event_lines
+        if len(lines) != len(kinds) or not lines:
+            return False
+        for line, run in zip(lines, runs):
+            self.charge(line, "b", run)
+        if lines[-1] == last:
+            # after a write: after the line; after a call, read or lookup: before the store or return
+            self.charge(last, "a" if kinds[-1] == "write" else "p", runs[-1])
+        else:
+            self.charge(lines[-1] + 1, "b", runs[-1])
+        return True
 
     # ------------------------------------------------------------------ simple statements
     def s_ExprStmt(self, st) -> tuple:
         e = st.expr
         t = type(e)
         main = None
-        if t is A.Assign:
-            self.assign(e)
-        elif t is A.PreOp:
-            self.step(e.target, e.op)
-        elif t is A.PostOp:
-            self.step(e.target, e.op, post=True)
-        elif t is A.Unary and isinstance(e.operand, A.VARIABLE_NODES) and self.constant(e) is None:
-            self.unary_assign(e)
-        elif t is A.AbortTrap:
-            main = self.expr(e).text[:-1] + ", keep_result=False)"
-        else:
-            main = self.expr(e).text
         ops = self.piece(lambda: self.mc.block([st]), run_params=self.run_params(st))
-        pre, post = split(ops)
-        pre, mid = split_read(pre)
+        with self.timed_statement(ops, top=e) as timed:
+            if t is A.Assign:
+                self.assign(e)
+            elif t is A.PreOp:
+                self.step(e.target, e.op)
+            elif t is A.PostOp:
+                self.step(e.target, e.op, post=True)
+            elif t is A.Unary and isinstance(e.operand, A.VARIABLE_NODES) and self.constant(e) is None:
+                self.unary_assign(e)
+            elif t is A.AbortTrap:
+                main = self.expr(e).text[:-1] + ", keep_result=False)"
+            else:
+                main = self.expr(e).text
+            if timed and main is not None and self.is_event(e):
+                main = Event(main)
         first, last = self.flush(main, st)
         self.note_depths(range(first, last + 1))
-        self.charge(first, "b", pre)
-        if mid:
-            self.code.charge_mid(first, mid)
+        if not (timed and self.charge_events(ops, first, last)):
+            pre, post = split(ops)
+            pre, mid = split_read(pre)
+            self.charge(first, "b", pre)
+            if mid:
+                self.code.charge_mid(first, mid)
+            self.charge(last, "p", post)
         if t in (A.Call, A.ObjCall) or (t is A.NameRef and main):
             self.charge_add(last, "p", drop_result_delta(self.T))
-        self.charge(last, "p", post)
         return first, last
 
     def run_params(self, st) -> int:
@@ -316,29 +367,38 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         return f"{self.frame_name}.{self.result_name}" if self.in_frame else self.result_name
 
     def s_Return(self, st) -> tuple:
-        if st.value is None:
-            main = f"return {self.result_text()}" if self.objt.uses_result(self.method) else "return"
-        else:
-            main = f"return {self.value(st.value)}"
-        return self.ending(st, main)
+        ops = self.piece(lambda: self.mc.block([st]))
+        with self.timed_statement(ops, top=st.value) as timed:
+            if st.value is None:
+                main = f"return {self.result_text()}" if self.objt.uses_result(self.method) else "return"
+            else:
+                main = f"return {self.value(st.value)}"
+            if timed and st.value is not None and self.is_event(st.value):
+                main = Event(main)
+        return self.ending(st, main, ops, timed)
 
     def s_Abort(self, st) -> tuple:
-        if st.value is not None:
-            return self.ending(st, f"raise spin.Abort({self.value(st.value)})")
-        value = self.result_text() if self.objt.uses_result(self.method) else "0"
-        return self.ending(st, f"raise spin.Abort({value}, bare=True)")
-
-    def ending(self, st, main) -> tuple:
-        """``return``/``abort``: what comes after a call in the value is paid after the value (weave.py)."""
         ops = self.piece(lambda: self.mc.block([st]))
+        with self.timed_statement(ops, top=st.value) as timed:
+            if st.value is not None:
+                main = f"raise spin.Abort({self.value(st.value)})"
+                if timed and self.is_event(st.value):
+                    main = Event(main)
+                return self.ending(st, main, ops, timed)
+        value = self.result_text() if self.objt.uses_result(self.method) else "0"
+        return self.ending(st, f"raise spin.Abort({value}, bare=True)", ops, False)
+
+    def ending(self, st, main, ops, timed: bool) -> tuple:
+        """``return``/``abort``: what comes after a call in the value is paid after the value (weave.py)."""
         first, last = self.flush(main, st)
         self.note_depths(range(first, last + 1))
-        pre, post = split(ops)
-        pre, mid = split_read(pre)
-        self.charge(first, "b", pre)
-        if mid:
-            self.code.charge_mid(first, mid)
-        self.charge(last, "p", post)            # paid between the value and leaving (weave.py)
+        if not (timed and self.charge_events(ops, first, last)):
+            pre, post = split(ops)
+            pre, mid = split_read(pre)
+            self.charge(first, "b", pre)
+            if mid:
+                self.code.charge_mid(first, mid)
+            self.charge(last, "p", post)            # paid between the value and leaving (weave.py)
         self.exits.add(last)
         return first, last
 
@@ -407,11 +467,12 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
     def store(self, target, value_node, value: X, mark: int, reuse: bool = False) -> str:
         text = self.place(target, reuse)
         value = self.value_first(value_node, value, target, mark, reuse)
+        register = isinstance(target.expr if isinstance(target, A.Paren) else target, (A.RegRef, A.SprRef))
         if self.is_local(target):
             self.hoisted.append(f"{text} = {self.wrapped(value).text}")
         else:
             v = self.wrapped(value).text if value.boolean else value.text
-            self.hoisted.append(f"{text} = {v}")
+            self.hoisted.append(self.line(f"{text} = {v}", register))
         return text
 
     def store_op(self, target, op: str, value_node, value: X, mark: int, reuse: bool = False) -> str:
@@ -419,23 +480,29 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         aug = op in _PY_AUG and not local and not value.boolean
         text = self.place(target, reuse or not aug)
         value = self.value_first(value_node, value, target, mark, reuse or not aug, reads_target=True)
+        register = isinstance(target.expr if isinstance(target, A.Paren) else target, (A.RegRef, A.SprRef))
         if aug:
-            self.hoisted.append(f"{text} {op}= {value.text}")
+            self.hoisted.append(self.line(f"{text} {op}= {value.text}", register))
             return text
         new = self.binop(op, X(text), value)
-        self.hoisted.append(f"{text} = {(self.wrapped(new) if local or new.boolean else new).text}")
+        self.hoisted.append(self.line(f"{text} = {(self.wrapped(new) if local or new.boolean else new).text}", register))
         return text
 
     def binop(self, op: str, left: X, right: X) -> X:
         """``left OP right`` for already translated operands (assignment operators)."""
         return self.x_Binary(A.Binary(None, op, Given(None, left), Given(None, right)))
 
-    def step(self, target, op: str, post: bool = False, reuse: bool = False, text: str = None) -> str:
+    def step(self, target, op: str, post: bool = False, reuse: bool = False, text: str = None,
+             timed: bool = None) -> str:
         """Hoist ``++x``/``x++``/``~x``/``x~``/``?x``/``x?`` on ``target`` as a statement; the target's text.
 
-        ``text``: the target placed already (``x++`` read its old value first).
+        ``text``: the target placed already (``x++`` read its old value first);
+        ``timed``: is this line the timed event (default: if ``target`` is a register).
         """
         local = self.is_local(target)
+        if timed is None:
+            timed = isinstance(target.expr if isinstance(target, A.Paren) else target, (A.RegRef, A.SprRef))
+        mark = len(self.hoisted)
         if text is None:        # T = f(T) reads the target in the same statement that writes it
             twice = op == "?" or op in ("~", "~~") and not post
             text = self.place(target, reuse or twice)
@@ -451,16 +518,23 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             self.hoisted.append(f"{text} = spin.{fn}({text})")
         else:
             self.unsupported(f"the operator {op}", target)
+        if timed:
+            self.hoisted[mark] = self.line(self.hoisted[mark], True)
         return text
 
     def unary_assign(self, e) -> None:
         """``-x``, ``!x``, ``||x`` ... written as a statement: Spin changes ``x`` in place."""
         text = self.place(e.operand, reuse=True)
         new = self.wrapped(self.x_Unary(A.Unary(e.pos, e.op, Given(e.pos, X(text)))))
-        self.hoisted.append(f"{text} = {new.text}")
+        register = isinstance(e.operand.expr if isinstance(e.operand, A.Paren) else e.operand, (A.RegRef, A.SprRef))
+        self.hoisted.append(self.line(f"{text} = {new.text}", register))
 
     # ------------------------------------------------------------------ builtins
     def x_Builtin(self, node) -> X:
+        x = self.builtin_x(node)
+        return self.event(x, node) if node.name.lower() in _EVENT_BUILTINS else x
+
+    def builtin_x(self, node) -> X:
         name = node.name.lower()
         args = node.args or []
         if name in ("constant", "float", "round", "trunc"):
@@ -645,6 +719,42 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         for s in stmts:
             _, last = self.statement(s)
         return last
+
+def _events(ops) -> list:
+    return [o.kind for o in ops if o.kind]
+
+
+def _one_event(ops) -> bool:
+    """Can one charge before and one after place every timed event of ``ops`` (costs.split, split_read)?
+
+    Yes for one event, and for a register read followed by one other event
+    (the read pays from itself up to the other, as in ``waitcnt(cnt + x)``).
+    """
+    kinds = _events(ops)
+    return len(kinds) <= 1 or len(kinds) == 2 and kinds[0] == "read" and kinds[1] != "read"
+
+
+def _segments(ops) -> tuple:
+    """``(runs, kinds)``: ``ops`` cut at each timed event: a call or a register write after its bytecode
+    (the callee runs, the pins change, at its end), a register read, a wait, a cog start or stop or a
+    lookup paid item by item before it; ``runs`` has one run more than ``kinds``.  Waits are paid by
+    their helper."""
+    runs, kinds, run = [], [], []
+    for o in ops:
+        if o.kind in ("call", "write"):
+            run.append(o)
+            runs.append(run)
+            run = []
+        elif o.kind:
+            runs.append(run)
+            run = [] if o.kind == "wait" else [o]
+        else:
+            run.append(o)
+        if o.kind:
+            kinds.append(o.kind)
+    runs.append(run)
+    return runs, kinds
+
 
 def _lookup_calls(text: str) -> list:
     """The ``spin.lookup(...)``-like calls in a line of Python, left to right by where they start."""
