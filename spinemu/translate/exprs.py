@@ -433,7 +433,7 @@ class ExprTranslator(EvalOrder):
         value = self.value_first(node.value, value, node.target, mark, True, reads_target=node.op != ":=")
         if node.op != ":=":
             op = node.op.upper() if node.op.isalpha() else node.op
-            value = self.binop(op, X(text), value)
+            value = self.binop(op, X(text), value, node.value)
         tmp = self.temp("value")
         reads = node.op != ":="
         self.hoisted.append(self.line(f"{tmp} = {self.wrapped(value).text}", reads and self.store_event(node.target, True)))

@@ -190,6 +190,8 @@ class EvalOrder:
             return self.effects([_get(target, p) for p in index_paths(target)])
         if t in (A.Number, A.Float, A.Str, A.KConst, A.ObjConst):
             return NONE
+        if t is Given:
+            return NONE if node.node is None or node.x.saved else self.effects(node.node)
         e = _PAID if (t is A.Binary and node.op in _PAID_BINARY or t is A.Unary and node.op in _PAID_UNARY
                       or t is A.Lookup) else NONE
         if t is A.Lookup and self.lazy_items(node):
@@ -264,13 +266,15 @@ class EvalOrder:
         """
         mine, theirs = self.effects(node), self.effects(later)
         if reorder:
-            if (mine.calls or mine.paid) and (theirs.calls or theirs.paid or _hub_places(theirs.reads)):
-                return True                     # its call, or what it pays, would come after theirs
+            if mine.calls and (theirs.calls or theirs.paid or _hub_places(theirs.reads)) or \
+                    mine.paid and theirs.events:
+                return True                     # its call would come after theirs, what it pays after an event
             return overlap(mine.reads, theirs.writes)
         if not (theirs.hoists or self.event_mode and theirs.events):
             return False
-        # their statements come first: a call, a division ... of its own must not move after them
-        return mine.calls or mine.paid or overlap(mine.reads, theirs.writes)
+        # their statements come first: a call of its own must not move after them, nor what it pays
+        # (a division's loop) after a timed event of theirs
+        return mine.calls or mine.paid and theirs.events or overlap(mine.reads, theirs.writes)
 
     def save(self, x, at: int):
         """Save ``x`` to a temporary whose statement goes at ``at`` in the hoisted list; the temporary's X."""
@@ -378,8 +382,13 @@ class EvalOrder:
 
 
 class Given(A.Expr):
-    """An operand translated already (its X); the translator returns it as it is."""
+    """An operand translated already (its X); the translator returns it as it is.
 
-    def __init__(self, pos, x):
+    ``node``: the Spin expression it came from, if its text still evaluates it
+    (what it does counts where Python could skip it: ``x OR= f(y)``).
+    """
+
+    def __init__(self, pos, x, node=None):
         self.pos = pos
         self.x = x
+        self.node = node

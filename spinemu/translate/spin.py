@@ -617,12 +617,17 @@ def left_on_stack(*offsets):
     return values[0] if len(values) == 1 else values
 
 
-def call_at(depth: int, method, *args, **kwargs):
+def call_at(depth: int, method, *args, spin_pay=None, **kwargs):
     """Call a translated method whose frame starts ``depth`` stack bytes above its caller's.
 
     The weaver wraps the calls of a line whose calls start at different
     depths (``f(g(x), g(y))``) with this, so :func:`_frame_base` finds each one's.
+    ``spin_pay``: cycles (a run of bytecodes) to pay before the call starts:
+    in a statement with several calls, the bytecodes since the call before.
     """
+    if spin_pay is not None and RT.T is not None:
+        from .runtime import tick
+        tick(spin_pay)
     return method(*args, **kwargs)
 
 

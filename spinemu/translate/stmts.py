@@ -106,11 +106,10 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
 
         A lookup whose items are evaluated one by one at run time (see
         ``x_Lookup``) is priced without its items: the runtime pays each item
-        it reaches.  ``last_data`` keeps the whole bytecode (where its calls go).
+        it reaches.  ``last_data``: the bytecode priced.
         """
         lazy = self.lazy_lookups()
         if lazy:
-            self.last_data = self._compiled(fn, loop_count)
             kept = [n.items for n in lazy]
             for n in lazy:
                 n.items = []
@@ -119,6 +118,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             finally:
                 for n, items in zip(lazy, kept):
                     n.items = items
+            self.last_data = data       # (the calls in such a lookup's items run inside its search)
             return price(self.T, data, **kw)
         data = self._compiled(fn, loop_count)
         self.last_data = data
@@ -159,18 +159,22 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                 return len(pubs[method - 1].params), self.names.child_method(sym.name, pubs[method - 1].name)
         return 0, None
 
-    def note_depths(self, lines) -> None:
-        """Record the stack bytes in use at the calls of the piece compiled last, for ``lines``.
+    def note_depths(self, lines, data: bytes = None, runs=None) -> None:
+        """Record the stack bytes in use at the calls of ``data`` (the piece compiled last), for ``lines``.
 
         One number when every call of the statement starts at the same depth;
         else ``[(method, depth), ...]`` in the order the calls run
         (``f(g(x), g(y))``: g above f's frame, the second g one long higher,
-        then f); the weaver hands each call its own depth.
+        then f); the weaver hands each call its own depth.  ``runs``: the
+        cycles each call after the first pays before it starts (a statement
+        whose timed events are calls: ``[(method, depth, cycles), ...]``).
         """
-        calls = call_depths(self.last_data, self.callee)
+        calls = call_depths(self.last_data if data is None else data, self.callee)
         if not calls:
             return
-        if all(d == calls[0][0] for d, _ in calls):
+        if runs is not None and len(runs) == len(calls):
+            depth = [(name, d + self.held, run) for (d, name), run in zip(calls, runs)]
+        elif all(d == calls[0][0] for d, _ in calls):
             depth = calls[0][0] + self.held if calls[0][0] + self.held else None
         else:
             depth = [(name, d + self.held) for d, name in calls]
@@ -295,7 +299,8 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         it is an event itself (a call as a statement): it stays on the last line.
         """
         saved = self.event_mode, self.top_node
-        self.event_mode = not _one_event(ops)
+        kinds = _events(ops)
+        self.event_mode = not _one_event(ops) and not all(k == "call" for k in kinds)
         self.top_node = top
         try:
             yield self.event_mode
@@ -325,6 +330,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         t = type(e)
         main = None
         ops = self.piece(lambda: self.mc.block([st]), run_params=self.run_params(st))
+        data = self.last_data
         with self.timed_statement(ops, top=e) as timed:
             if t is A.Assign:
                 self.assign(e)
@@ -341,14 +347,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             if timed and main is not None and self.is_event(e):
                 main = Event(main)
         first, last = self.flush(main, st)
-        self.note_depths(range(first, last + 1))
-        if not (timed and self.charge_events(ops, first, last)):
-            pre, post = split(ops)
-            pre, mid = split_read(pre)
-            self.charge(first, "b", pre)
-            if mid:
-                self.code.charge_mid(first, mid)
-            self.charge(last, "p", post)
+        self.charge_statement(ops, data, first, last, timed)
         if t in (A.Call, A.ObjCall) or (t is A.NameRef and main):
             self.charge_add(last, "p", drop_result_delta(self.T))
         return first, last
@@ -368,6 +367,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
 
     def s_Return(self, st) -> tuple:
         ops = self.piece(lambda: self.mc.block([st]))
+        data = self.last_data
         with self.timed_statement(ops, top=st.value) as timed:
             if st.value is None:
                 main = f"return {self.result_text()}" if self.objt.uses_result(self.method) else "return"
@@ -375,32 +375,54 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                 main = f"return {self.value(st.value)}"
             if timed and st.value is not None and self.is_event(st.value):
                 main = Event(main)
-        return self.ending(st, main, ops, timed)
+        return self.ending(st, main, ops, data, timed)
 
     def s_Abort(self, st) -> tuple:
         ops = self.piece(lambda: self.mc.block([st]))
+        data = self.last_data
         with self.timed_statement(ops, top=st.value) as timed:
             if st.value is not None:
                 main = f"raise spin.Abort({self.value(st.value)})"
                 if timed and self.is_event(st.value):
                     main = Event(main)
-                return self.ending(st, main, ops, timed)
+                return self.ending(st, main, ops, data, timed)
         value = self.result_text() if self.objt.uses_result(self.method) else "0"
-        return self.ending(st, f"raise spin.Abort({value}, bare=True)", ops, False)
+        return self.ending(st, f"raise spin.Abort({value}, bare=True)", ops, data, False)
 
-    def ending(self, st, main, ops, timed: bool) -> tuple:
+    def ending(self, st, main, ops, data, timed: bool) -> tuple:
         """``return``/``abort``: what comes after a call in the value is paid after the value (weave.py)."""
         first, last = self.flush(main, st)
-        self.note_depths(range(first, last + 1))
-        if not (timed and self.charge_events(ops, first, last)):
-            pre, post = split(ops)
-            pre, mid = split_read(pre)
-            self.charge(first, "b", pre)
-            if mid:
-                self.code.charge_mid(first, mid)
-            self.charge(last, "p", post)            # paid between the value and leaving (weave.py)
+        self.charge_statement(ops, data, first, last, timed)
         self.exits.add(last)
         return first, last
+
+    def charge_statement(self, ops, data, first: int, last: int, timed: bool) -> None:
+        """Charge a statement written on lines ``first..last`` (and record where its calls' frames go).
+
+        One timed event (or a register read, then one event): the bytecodes up
+        to it before the first line, the rest before the last line stores or
+        returns (``post``).  Several calls and no other event: the same, and
+        each call after the first pays the bytecodes since the call before it
+        as it starts (the weaver wraps it).  Other events: one line per event
+        (:meth:`timed_statement`, :meth:`charge_events`).
+        """
+        lines = range(first, last + 1)
+        if timed and self.charge_events(ops, first, last):
+            self.note_depths(lines, data)
+            return
+        runs, kinds = _segments(ops)
+        if len(kinds) > 1 and all(k == "call" for k in kinds):
+            self.charge(first, "b", runs[0])
+            self.note_depths(lines, data, [None] + [chain(r) for r in runs[1:-1]])
+            self.charge(last, "p", runs[-1])
+            return
+        self.note_depths(lines, data)
+        pre, post = split(ops)
+        pre, mid = split_read(pre)
+        self.charge(first, "b", pre)
+        if mid:
+            self.code.charge_mid(first, mid)
+        self.charge(last, "p", post)            # paid between the value and leaving (weave.py)
 
     def s_Next(self, st) -> tuple:
         loop = self.loop_of(st, "next")
@@ -484,13 +506,14 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         if aug:
             self.hoisted.append(self.line(f"{text} {op}= {value.text}", register))
             return text
-        new = self.binop(op, X(text), value)
+        new = self.binop(op, X(text), value, value_node)
         self.hoisted.append(self.line(f"{text} = {(self.wrapped(new) if local or new.boolean else new).text}", register))
         return text
 
-    def binop(self, op: str, left: X, right: X) -> X:
-        """``left OP right`` for already translated operands (assignment operators)."""
-        return self.x_Binary(A.Binary(None, op, Given(None, left), Given(None, right)))
+    def binop(self, op: str, left: X, right: X, right_node=None) -> X:
+        """``left OP right`` for already translated operands (assignment operators; ``right_node``: the
+        Spin value ``right`` comes from)."""
+        return self.x_Binary(A.Binary(None, op, Given(None, left), Given(None, right, right_node)))
 
     def step(self, target, op: str, post: bool = False, reuse: bool = False, text: str = None,
              timed: bool = None) -> str:

@@ -18,6 +18,9 @@ A line whose calls start at different stack depths (``SPIN_CALL_DEPTHS``
 lists ``(method, depth)`` for it) has each call wrapped as
 ``__spin_call_at(depth, method, args...)`` so the callee's hub frame lands
 where the bytecode interpreter puts it (:func:`spinemu.translate.spin.call_at`).
+In a statement with several calls, ``(method, depth, cycles)`` also gives what
+each call after the first pays as it starts (``spin_pay=cycles``): the
+bytecodes since the call before it.
 
 Each charge is ``(aligned, extra)``: ``aligned`` cycles charged with a
 bytecode fetch's hub alignment (:func:`spinemu.translate.runtime.tick`),
@@ -72,8 +75,9 @@ def _calls_in_order(stmt) -> list:
     out = []
 
     def visit(n):
-        if isinstance(n, ast.stmt) and n is not stmt:
-            return                      # a nested body's statements are lines of their own
+        if isinstance(n, ast.stmt) and n is not stmt or isinstance(n, ast.Lambda):
+            return                      # a nested body's statements are lines of their own; a lookup item's
+            #                             lambda runs (and pays) on its own
         children = list(ast.iter_child_nodes(n))
         if isinstance(n, ast.Assign):   # the value runs before the targets' indexes
             children = [n.value] + n.targets
@@ -108,6 +112,8 @@ def _wrap_calls(stmt, depths: list, k: int = 0) -> int:
             continue
         call.args = [ast.copy_location(ast.Constant(depths[j][1]), call), call.func] + call.args
         call.func = ast.copy_location(ast.Name(_CALL_AT, ast.Load()), call)
+        if len(depths[j]) > 2 and depths[j][2] is not None:   # cycles since the statement's call before
+            call.keywords.append(ast.keyword("spin_pay", ast.copy_location(ast.Constant(depths[j][2]), call)))
         k = j + 1
     return k
 
