@@ -128,6 +128,9 @@ def _operands(inner: str) -> list:
     return []
 
 
+_SETS_LOCAL = re.compile(r"(?i)\s*(longfill\(@l\d+,|l\d+(\[\d+\])?\s*:=)")
+
+
 def shrink(program, check=check_translate):
     """A smaller program on which ``check`` still disagrees the same way.
 
@@ -139,7 +142,17 @@ def shrink(program, check=check_translate):
     want = _kind(check(program, {}))
     if want is None:
         return program
-    program = reduce(program, check)
+    # a local must stay assigned before it is read (Spin does not clear locals, and the engines'
+    # stacks hold different scratch): the lines that set locals first are kept
+    keep = {(name, line.strip()) for name, text in program.files.items() for line in text.split("\n")
+            if _SETS_LOCAL.match(line)}
+
+    def guarded(cand, ctx):
+        present = {(name, line.strip()) for name, text in cand.files.items() for line in text.split("\n")}
+        return check(cand, ctx) if keep <= present else None
+
+    program = reduce(program, guarded)
+    check = guarded
     changed = True
     while changed:
         changed = False
