@@ -57,7 +57,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.method = method
         self.code = code
         self.T = objt.timing
-        self.mc = cstmts.MethodCompiler(self.obj, method)
+        self.mc = _Compiler(self.obj, method)
         self.frame = self.mc.frame
         self.result_name = self.names.local(method.result or "result")
         self.in_frame = needs_hub_frame(method)
@@ -105,21 +105,12 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         """Price the bytecode the compiler makes for ``fn()`` (a statement or expression).
 
         A lookup whose items are evaluated one by one at run time (see
-        ``x_Lookup``) is priced without its items: the runtime pays each item
-        it reaches.  ``last_data``: the bytecode priced.
+        ``x_Lookup``) is priced without its items (laid out, so that addresses
+        keep their size, but left out): the runtime pays each item it reaches.
+        ``last_data``: the bytecode priced (the calls in such items run inside
+        the lookup's search).
         """
-        lazy = self.lazy_lookups()
-        if lazy:
-            kept = [n.items for n in lazy]
-            for n in lazy:
-                n.items = []
-            try:
-                data = self._compiled(fn, loop_count)
-            finally:
-                for n, items in zip(lazy, kept):
-                    n.items = items
-            self.last_data = data       # (the calls in such a lookup's items run inside its search)
-            return price(self.T, data, **kw)
+        self.mc.lazy = frozenset(id(n) for n in self.lazy_lookups())
         data = self._compiled(fn, loop_count)
         self.last_data = data
         return price(self.T, data, **kw)
@@ -145,7 +136,16 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             spans, _ = mc.code.layout(self.objt.offset_of(self.cur_pos, self.method))
         finally:
             mc.code, mc.loops = saved
-        return b"".join(s.data for s in spans if s.pos is not None or s.note != "string")   # not the pool
+        out = []
+        for k, sp in enumerate(spans):
+            if sp.pos is None and sp.note == "string":
+                continue                    # the string pool
+            if sp.pos is _ITEMS:            # a lookup item paid at run time; the lookup's own LOOK_DONE stays
+                last = k + 1 == len(spans) or spans[k + 1].pos is not _ITEMS
+                if not (last and sp.data == b"\x0f"):
+                    continue
+            out.append(sp.data)
+        return b"".join(out)
 
     def callee(self, data, i: int) -> tuple:
         """``(parameter count, Python name)`` of the method the CALL/CALL_OBJ at ``data[i]`` calls."""
@@ -742,6 +742,43 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         for s in stmts:
             _, last = self.statement(s)
         return last
+
+_ITEMS = object()       # the code position of a lookup's items that the runtime pays (see _Compiler)
+
+
+class _Compiler(cstmts.MethodCompiler):
+    """The compiler's method compiler, used to price pieces of a method.
+
+    The items of the lookups in ``lazy`` (ids of nodes) are compiled with the
+    code position ``_ITEMS`` (from the end of the lookup's value up to its
+    LOOK_DONE), so that the translator can leave them out of a statement's
+    price but still lay them out where they are.
+    """
+
+    lazy = frozenset()
+
+    def x_Lookup(self, node) -> None:
+        if id(node) not in self.lazy:
+            return super().x_Lookup(node)
+        code, pos = self.code, self.code.pos
+        had = "expr" in self.__dict__           # a lookup around this one watches its own value
+        inner = self.expr
+
+        def expr(n):
+            inner(n)
+            if n is node.value:
+                code.pos = _ITEMS
+
+        self.expr = expr
+        try:
+            super().x_Lookup(node)
+        finally:
+            if had:
+                self.expr = inner
+            else:
+                del self.expr
+            code.pos = pos
+
 
 def _events(ops) -> list:
     return [o.kind for o in ops if o.kind]
