@@ -21,6 +21,7 @@ from ..compiler.exprs import USING
 from ..frontend import ast as A
 from ..frontend.ast import key
 from .costs import Op, jump_op, split
+from .exprs import X
 
 
 def assigns(stmts, name: str) -> bool:
@@ -62,19 +63,26 @@ class LoopTranslator:
         return line, line
 
     def s_RepeatCount(self, st) -> tuple:
+        T = self.T
         c = self.constant(st.count)
-        n = self.expr(st.count)
+        ops = self.expr_ops(st.count) + [jump_op(T, "TJZ", self.long_jump(st.pos, "repeat n"), False)]
+        data = self.last_data
+        with self.timed_statement(ops) as timed:
+            n = self.expr(st.count)
+            if self.effects(st.count).events and not n.saved:
+                # a call (a register read ...) on a line of its own: paid before it, the rest before the loop
+                tmp = self.temp("count")
+                self.hoisted.append(self.line(f"{tmp} = {n.text}", self.is_event(st.count)))
+                n = X(tmp, wrapped=n.wrapped, boolean=n.boolean, saved=True)
         count = n.text if c is not None and c >= 0 else f"spin.u32({self.wrapped(n).text})"
-        if self.hoisted:
-            first, _ = self.flush(None, st)
-        else:
-            first = None
+        first, last = self.emit_hoisted(st)
         line = self.emit(f"for _ in range({count}):", st)
         long_back = self.long_jump(st.pos, "repeat n", 1)
-        T = self.T
         djnz_t, djnz_n = jump_op(T, "DJNZ", long_back, True), jump_op(T, "DJNZ", long_back, False)
-        self.charge(first or line, "b", self.expr_ops(st.count) + [jump_op(T, "TJZ", self.long_jump(st.pos, "repeat n"),
-                                                                             False)])
+        if first is None:
+            self.charge(line, "b", ops)
+        else:
+            self.charge(line, "b", self.charge_decision(ops, data, first, range(first, last + 1), timed))
         info = _LoopInfo("count", next_ops=[djnz_t])
         with self.holding(4):               # the count stays on the stack while the body runs
             _, last = self.loop_block(st.body, info)

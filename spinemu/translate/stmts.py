@@ -396,6 +396,41 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.exits.add(last)
         return first, last
 
+    def emit_hoisted(self, node) -> tuple:
+        """Emit the hoisted lines (before a condition); ``(first line or None, last line or None)``;
+        ``self.event_lines`` gets the ``Event`` lines."""
+        first = last = None
+        self.event_lines = []
+        for h in self.hoisted:
+            last = self.emit(h, node)
+            first = first or last
+            if isinstance(h, Event):
+                self.event_lines.append(last)
+        self.hoisted = []
+        return first, last
+
+    def charge_decision(self, ops, data, first: int, lines, timed: bool) -> list:
+        """Charge the bytecodes ``ops`` of a value Python decides on (a condition and its jump, a case
+        selector, a repeat count), written on ``lines`` (``first`` the first of them); returns the run
+        to pay once it is decided (where each way goes on).  As :meth:`charge_statement`."""
+        runs, kinds = _segments(ops)
+        if timed and len(self.event_lines) == len(kinds) and self.event_lines:
+            for line, run in zip(self.event_lines, runs):
+                self.charge(line, "b", run)
+            self.note_depths(lines, data)
+            return runs[-1]
+        if len(kinds) > 1 and all(k == "call" for k in kinds):
+            self.charge(first, "b", runs[0])
+            self.note_depths(lines, data, [None] + [chain(r) for r in runs[1:-1]])
+            return runs[-1]
+        self.note_depths(lines, data)
+        pre, post = split(ops)
+        pre, mid = split_read(pre)
+        self.charge(first, "b", pre)
+        if mid:
+            self.code.charge_mid(first, mid)
+        return post
+
     def charge_statement(self, ops, data, first: int, last: int, timed: bool) -> None:
         """Charge a statement written on lines ``first..last`` (and record where its calls' frames go).
 
@@ -604,28 +639,24 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         last = len(st.branches) - 1
         closers = 0
         for i, br in enumerate(st.branches):
-            c = self.cond(br.cond)
+            j = "JNZ" if br.negate else "JZ"
+            ops = self.expr_ops(br.cond) + [jump_op(self.T, j, self.long_jump(br.pos, "if"), taken=False)]
+            data = self.last_data
+            with self.timed_statement(ops) as timed:
+                c = self.cond(br.cond)
             if br.negate:
                 c = f"not ({c})" if " " in c else f"not {c}"
-            hoisted = self.hoisted
-            self.hoisted = []
-            if hoisted and i > 0:
+            if self.hoisted and i > 0:
                 self.emit("else:", br)
                 self.code.indent += 1
                 closers += 1
-            branch_first = None
-            for h in hoisted:
-                ln = self.emit(h, br)
-                branch_first = branch_first or ln
-            word = "if" if i == 0 or hoisted else "elif"
+            branch_first, _ = self.emit_hoisted(br)
+            word = "if" if i == 0 or branch_first else "elif"
             header = self.emit(f"{word} {c}:", br)
             top = top or header
             branch_first = branch_first or header
             first = first or branch_first
-            j = "JNZ" if br.negate else "JZ"
-            ops = self.expr_ops(br.cond) + [jump_op(self.T, j, self.long_jump(br.pos, "if"), taken=False)]
-            pre, post = split(ops)
-            self.charge(branch_first, "b", pre)
+            post = self.charge_decision(ops, data, branch_first, range(branch_first, header + 1), timed)
             body_first, body_last = self.block(br.body)
             self.charge(body_first, "b", post, first=True)
             self.charge(header, "e", post)
@@ -640,23 +671,19 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
 
     # ------------------------------------------------------------------ case
     def s_Case(self, st) -> tuple:
-        sel_x = self.expr(st.value)
-        sel = self.wrapped(sel_x).text
-        pre_lines = list(self.hoisted)
-        self.hoisted = []
-        if not (sel.isidentifier() or sel.startswith("self.") and sel[5:].isidentifier()):
-            tmp = self.temp("selector")
-            pre_lines.append(f"{tmp} = {sel}")
-            sel = tmp
-        first = None
-        for text in pre_lines:
-            ln = self.emit(text, st)
-            first = first or ln
-        if first is not None:               # a call in the selector comes after CASE's end address is pushed
-            self.piece(lambda: self.mc.block([st]))
-            self.note_depths(range(first, ln + 1))
         imm = 1 if self.objt.compiled_at(st.pos)[:1] == b"\x38" else 2     # the end address: PUSH_IMM1 or 2
         head = [Op(0x37 + imm, self.T.push_imm[imm])] + self.expr_ops(st.value)
+        data = bytes((0x37 + imm,)) + bytes(imm) + self.last_data   # (calls come after the end address push)
+        with self.timed_statement(head) as timed:
+            sel_x = self.expr(st.value)
+        sel = self.wrapped(sel_x).text
+        if not (sel.isidentifier() or sel.startswith("self.") and sel[5:].isidentifier()):
+            tmp = self.temp("selector")
+            self.hoisted.append(Event(f"{tmp} = {sel}") if timed and self.is_event(st.value) else f"{tmp} = {sel}")
+            sel = tmp
+        first, ln = self.emit_hoisted(st)
+        if first is not None:               # the selector computed on lines of its own: paid there
+            head = self.charge_decision(head, data, first, range(first, ln + 1), timed)
         items = [it for it in st.items if it.values is not None]
         other = next((it for it in st.items if it.values is None), None)
         header = top = body_last = None
