@@ -110,8 +110,9 @@ class Code:
         self.charges.setdefault(line, {})["mid"] = list(ops)
 
     def charge_each(self, line: int, runs) -> None:
-        """Charge one run before each operand of the ``or`` in the condition of the ``if`` on ``line``."""
-        self.charges.setdefault(line, {})["each"] = [list(r) for r in runs]
+        """Charge one run before each operand of the ``or`` in the condition of the ``if`` on ``line``
+        (a pair of runs: before the operand, and once its value is computed)."""
+        self.charges.setdefault(line, {})["each"] = [r if isinstance(r, tuple) else list(r) for r in runs]
 
     def charge_table(self) -> dict:
         """``{line: (before, after, else[, test[, post]])}``, each ``(aligned, extra[, access])`` or None.
@@ -138,7 +139,8 @@ class Code:
                 row[0] = (b[0], b[1], b[2] if len(b) > 2 else None, chain(mid))
             each = entry.get("each")
             if each:
-                row[3] = tuple((chain(r), 0) for r in each)
+                row[3] = tuple(((chain(r[0]), 0), (chain(r[1]), 0)) if isinstance(r, tuple) else (chain(r), 0)
+                               for r in each)
             while len(row) > 3 and not row[-1]:
                 row.pop()
             if any(row):

@@ -728,7 +728,8 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             header = self.emit(f"{'if' if n == 0 else 'elif'} {cond}:", item)
             top = top or header
             first = first or header
-            if len(per_value) == 1:
+            per_value = [_around_event(ops) for ops in per_value]
+            if len(per_value) == 1 and not isinstance(per_value[0], tuple):
                 self.charge(header, "b", (head if n == 0 else []) + per_value[0])
             else:                       # each value is compared only if the ones before it failed
                 self.charge(header, "b", head if n == 0 else [])
@@ -805,6 +806,16 @@ class _Compiler(cstmts.MethodCompiler):
             else:
                 del self.expr
             code.pos = pos
+
+
+def _around_event(ops):
+    """A case value's compare: its ops, or ``(before, after)`` its last call or register read when the
+    value has one (paid before the value and once it is computed, before the compare)."""
+    for j in range(len(ops) - 1, -1, -1):
+        if ops[j].kind in ("call", "read", "look"):
+            cut = j + 1 if ops[j].kind == "call" else j
+            return (ops[:cut], ops[cut:])
+    return ops
 
 
 def _events(ops) -> list:

@@ -44,6 +44,7 @@ __all__ = ["prepare", "load_package"]
 
 _TICK, _TICK_AT, _TICK_READ, _ADD = "__spin_tick", "__spin_tick_at", "__spin_tick_read", "__spin_add"
 _CALL_AT = "__spin_call_at"
+_THEN = "__spin_then"
 
 
 def _call(name, args, anchor):
@@ -113,7 +114,8 @@ def _wrap_calls(stmt, depths: list, k: int = 0) -> int:
         call.args = [ast.copy_location(ast.Constant(depths[j][1]), call), call.func] + call.args
         call.func = ast.copy_location(ast.Name(_CALL_AT, ast.Load()), call)
         if len(depths[j]) > 2 and depths[j][2] is not None:   # cycles since the statement's call before
-            call.keywords.append(ast.keyword("spin_pay", ast.copy_location(ast.Constant(depths[j][2]), call)))
+            pay = ast.keyword("spin_pay", ast.copy_location(ast.Constant(depths[j][2]), call))
+            call.keywords.append(ast.copy_location(pay, call))
         k = j + 1
     return k
 
@@ -159,13 +161,23 @@ def _weave_body(stmts: list, table: dict, depths: dict, lookups: dict) -> list:
             continue
         before, after, other = row[:3]
         post = row[4] if len(row) > 4 else None
-        if len(row) > 3 and isinstance(s, ast.If) and isinstance(s.test, ast.BoolOp) \
-                and isinstance(s.test.op, ast.Or) and len(s.test.values) == len(row[3]):
-            # one charge before each alternative: ``if tick(a) or x == 1 or tick(b) or x == 2:``
+        alternatives = None
+        if len(row) > 3 and isinstance(s, ast.If):
+            if isinstance(s.test, ast.BoolOp) and isinstance(s.test.op, ast.Or):
+                alternatives = s.test.values
+            elif len(row[3]) == 1:
+                alternatives = [s.test]
+        if alternatives is not None and len(alternatives) == len(row[3]):
+            # one charge before each alternative: ``if tick(a) or x == 1 or tick(b) or x == 2:``; a value
+            # that calls pays the rest once it is computed: ``tick(a) or then(b, x == self.f())``
             values = []
-            for charge, value in zip(row[3], s.test.values):
+            for charge, value in zip(row[3], alternatives):
+                if charge and isinstance(charge[0], tuple):
+                    charge, computed = charge
+                    value = ast.copy_location(ast.Call(ast.Name(_THEN, ast.Load()),
+                                                       [ast.Constant(computed[0]), value], []), value)
                 values += [c.value for c in _charge_stmts(charge, s)] + [value]
-            s.test = ast.copy_location(ast.BoolOp(ast.Or(), values), s.test)
+            s.test = ast.fix_missing_locations(ast.copy_location(ast.BoolOp(ast.Or(), values), s.test))
         elif len(row) > 3 and isinstance(s, ast.While):
             # charged each time the loop's condition is evaluated: ``while tick(...) or cond:``
             charge = _charge_stmts(row[3], s)
@@ -212,6 +224,7 @@ def prepare(cls) -> None:
     module.__dict__[_TICK_READ] = runtime.tick_read
     module.__dict__[_ADD] = runtime.add
     module.__dict__[_CALL_AT] = spin.call_at
+    module.__dict__[_THEN] = runtime.then
     install(module.__dict__)
     depths = getattr(module, "SPIN_CALL_DEPTHS", {})
     lookups = getattr(module, "SPIN_LOOKUPS", {})
