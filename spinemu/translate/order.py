@@ -331,10 +331,11 @@ class EvalOrder:
             return self._target_text(target)
         nodes = [_get(target, p) for p in paths]
         xs = self.operands(nodes)
-        if reuse:
-            for k, (n, x) in enumerate(zip(nodes, xs)):
-                if x.const is None and not x.saved and self._unstable(n, target):
-                    xs[k] = self.save(x, len(self.hoisted))
+        for k, (n, x) in enumerate(zip(nodes, xs)):
+            if x.const is None and not x.saved and (reuse and self._unstable(n, target) or self.effects(n).events):
+                # (an index with a call is computed before the store's line: its cycles after the
+                # call are paid there, before the store)
+                xs[k] = self.save(x, len(self.hoisted))
         given = target
         for p, x in zip(paths, xs):
             given = _with(given, p, Given(getattr(_get(target, p), "pos", None), x))
@@ -361,8 +362,8 @@ class EvalOrder:
         order in ``T = V`` would be.
         """
         nodes = index_nodes(target)
-        return any(self.effects(n).hoists or reuse and self.constant(n) is None and self._unstable(n, target)
-                   for n in nodes)
+        return any(self.effects(n).hoists or self.effects(n).events and self.constant(n) is None
+                   or reuse and self.constant(n) is None and self._unstable(n, target) for n in nodes)
 
     def value_first(self, value_node, value, target, mark: int, reuse: bool, reads_target: bool = False):
         """Save the value of an assignment to ``target`` if Python would not compute it first, as Spin does.

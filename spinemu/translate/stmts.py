@@ -560,10 +560,10 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         local = self.is_local(target)
         if timed is None:
             timed = isinstance(target.expr if isinstance(target, A.Paren) else target, (A.RegRef, A.SprRef))
-        mark = len(self.hoisted)
         if text is None:        # T = f(T) reads the target in the same statement that writes it
             twice = op == "?" or op in ("~", "~~") and not post
             text = self.place(target, reuse or twice)
+        mark = len(self.hoisted)
         if op in ("++", "--"):
             sign = "+" if op == "++" else "-"
             self.hoisted.append(f"{text} = wrap({text} {sign} 1)" if local else f"{text} {sign}= 1")

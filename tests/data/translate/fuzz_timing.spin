@@ -19,6 +19,17 @@ PUB main | i
   r[4] := (outa[2] := pin(10)) + pin(11)
   r[5] := pin(12) / a + (outa[6] := 1)
   r[6] := (phsa := pin(13)) + phsa
+  case pin(16)
+    17: r[7] := pin(17)
+    pin(18), 5: r[7] := 1
+  case a
+    pin(19): r[7] := 2
+  if pin(20) + pin(21)
+    r[7]++
+  repeat pin(1)
+    r[7]++
+  r[pin(22) & 7] := (a := 7)
+  outb[a..pin(23)]--
   return pin(14) + pin(15)
 PRI pin(v)
   outa[v & 7] := 1
