@@ -92,7 +92,7 @@ class LoopTranslator:
 
     def s_RepeatWhile(self, st) -> tuple:
         T = self.T
-        cond_ops = self.expr_ops(st.cond)
+        cond_ops = self.expr_ops(st.cond, st.cond.pos if st.post else None)    # (a post test is at the loop's end)
         if st.post:
             long_j = self.long_jump(st.cond.pos, "repeat while")
             line = self.emit("while True:", st)

@@ -183,8 +183,16 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                 if line is not None:
                     self.code.call_depths[line] = depth
 
-    def expr_ops(self, node) -> list:
-        return self.piece(lambda: self.mc.expr(node))
+    def expr_ops(self, node, at=None) -> list:
+        """The priced bytecode of expression ``node``, laid out where the code at ``at`` (a position:
+        a branch, a case value, a loop's test) is, else where the current statement is."""
+        if at is None:
+            return self.piece(lambda: self.mc.expr(node))
+        saved, self.cur_pos = self.cur_pos, at
+        try:
+            return self.piece(lambda: self.mc.expr(node))
+        finally:
+            self.cur_pos = saved
 
     def lookup_item_cost(self, exprs, down: bool, is_range: bool, each: bool = False) -> tuple:
         """``(cycles of the item, extra cycles when it matches)`` of one lookup/lookdown item.
@@ -640,7 +648,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         closers = 0
         for i, br in enumerate(st.branches):
             j = "JNZ" if br.negate else "JZ"
-            ops = self.expr_ops(br.cond) + [jump_op(self.T, j, self.long_jump(br.pos, "if"), taken=False)]
+            ops = self.expr_ops(br.cond, br.pos) + [jump_op(self.T, j, self.long_jump(br.pos, "if"), taken=False)]
             data = self.last_data
             with self.timed_statement(ops) as timed:
                 c = self.cond(br.cond)
@@ -705,17 +713,18 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                         conds.append(f"{lo} <= {sel} <= {hi}")
                     else:
                         conds.append(f"spin.within({sel}, {lo}, {hi})")
-                    ops += self.expr_ops(v.low) + self.expr_ops(v.high) + \
+                    ops += self.expr_ops(v.low, item.pos) + self.expr_ops(v.high, item.pos) + \
                         [jump_op(self.T, "CASE_RANGE", long_ranges.pop(0) if long_ranges else False)]
                     per_value.append(ops)
                 elif isinstance(v, A.Str) and len(self.obj.char_bytes(v.text)) > 1:
                     for b in self.obj.char_bytes(v.text):   # "abc": one value per character, as compiled
                         conds.append(f"{sel} == {b}")
-                        per_value.append(self.expr_ops(A.Number(v.pos, b, str(b))) + [
+                        per_value.append(self.expr_ops(A.Number(v.pos, b, str(b)), item.pos) + [
                             jump_op(self.T, "CASE_VALUE", long_values.pop(0) if long_values else False)])
                 else:
                     conds.append(f"{sel} == {self.wrapped(self.lazy(v)).text}")
-                    ops += self.expr_ops(v) + [jump_op(self.T, "CASE_VALUE", long_values.pop(0) if long_values else False)]
+                    ops += self.expr_ops(v, item.pos) + [
+                        jump_op(self.T, "CASE_VALUE", long_values.pop(0) if long_values else False)]
                     per_value.append(ops)
             tests.append((conds, per_value))
         for text in self.hoisted:           # local functions of values that assign (lazy())
