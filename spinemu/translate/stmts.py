@@ -197,8 +197,9 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
     def lookup_item_cost(self, exprs, down: bool, is_range: bool, each: bool = False) -> tuple:
         """``(cycles of the item, extra cycles when it matches)`` of one lookup/lookdown item.
 
-        ``each`` (items paid one by one at run time): ``(cycles before its call
-        or register read, cycles from there on, extra when it matches)``.
+        ``each`` (items paid one by one at run time): ``(cycles up to its call
+        or register write, or before its register read, cycles from there on,
+        extra when it matches)``.
         """
         T = self.T
         ops = [o for e in exprs for o in self.expr_ops(e)]
@@ -206,8 +207,8 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         table = getattr(T, name)
         if each:
             ops.append(Op(0x10, table[False]))
-            cut = next((k + (o.kind == "call") for k, o in enumerate(ops) if o.kind in ("call", "read", "look")),
-                       len(ops))
+            cut = next((k + (o.kind in ("call", "write")) for k, o in enumerate(ops)
+                        if o.kind in ("call", "write", "read", "look")), len(ops))
             return chain(ops[:cut]), chain(ops[cut:]), table[True] - table[False]
         found, missed = ceil16(table[True] + 12), ceil16(table[False] + 12)
         return sum(ceil16(o.rest + 12) for o in ops) + missed, found - missed
@@ -818,11 +819,11 @@ class _Compiler(cstmts.MethodCompiler):
 
 
 def _around_event(ops):
-    """A case value's compare: its ops, or ``(before, after)`` its last call or register read when the
-    value has one (paid before the value and once it is computed, before the compare)."""
+    """A case value's compare: its ops, or ``(before, after)`` its last call, register write or read when
+    the value has one (paid before the value and once it is computed, before the compare)."""
     for j in range(len(ops) - 1, -1, -1):
-        if ops[j].kind in ("call", "read", "look"):
-            cut = j + 1 if ops[j].kind == "call" else j
+        if ops[j].kind in ("call", "write", "read", "look"):
+            cut = j + 1 if ops[j].kind in ("call", "write") else j
             return (ops[:cut], ops[cut:])
     return ops
 

@@ -177,7 +177,8 @@ def _weave_body(stmts: list, table: dict, depths: dict, lookups: dict) -> list:
                     value = ast.copy_location(ast.Call(ast.Name(_THEN, ast.Load()),
                                                        [ast.Constant(computed[0]), value], []), value)
                 values += [c.value for c in _charge_stmts(charge, s)] + [value]
-            s.test = ast.fix_missing_locations(ast.copy_location(ast.BoolOp(ast.Or(), values), s.test))
+            test = ast.BoolOp(ast.Or(), values) if len(values) > 1 else values[0]
+            s.test = ast.fix_missing_locations(ast.copy_location(test, s.test))
         elif len(row) > 3 and isinstance(s, ast.While):
             # charged each time the loop's condition is evaluated: ``while tick(...) or cond:``
             charge = _charge_stmts(row[3], s)

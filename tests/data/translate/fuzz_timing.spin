@@ -30,6 +30,9 @@ PUB main | i
     r[7]++
   r[pin(22) & 7] := (a := 7)
   outb[a..pin(23)]--
+  case 3
+    (outa[7..4] := 3): r[7]++
+  r[7] := lookdown(a : 1, (outa[3..0] := 5), 3)
   return pin(14) + pin(15)
 PRI pin(v)
   outa[v & 7] := 1
