@@ -71,12 +71,13 @@ def _charge_stmts(charge, anchor) -> list:
     return out
 
 
-def _calls_in_order(stmt) -> list:
-    """The calls in a statement's own expressions (not its body), in the order Python makes them."""
+def _calls_in_order(stmt, lambdas: bool = False) -> list:
+    """The calls in a statement's own expressions (not its body), in the order Python makes them
+    (``lambdas``: also those in a lookup item's lambda, which runs when the lookup reaches it)."""
     out = []
 
     def visit(n):
-        if isinstance(n, ast.stmt) and n is not stmt or isinstance(n, ast.Lambda):
+        if isinstance(n, ast.stmt) and n is not stmt or isinstance(n, ast.Lambda) and not lambdas:
             return                      # a nested body's statements are lines of their own; a lookup item's
             #                             lambda runs (and pays) on its own
         children = list(ast.iter_child_nodes(n))
@@ -123,7 +124,7 @@ def _wrap_calls(stmt, depths: list, k: int = 0) -> int:
 def _add_lookup_costs(stmt, rows: list) -> None:
     """``spin.lookup(v, items)`` -> ``spin.lookup(v, items, costs)``: each lookup of the line gets its row of
     ``SPIN_LOOKUPS`` (listed from the left, by where each call starts)."""
-    calls = [c for c in _calls_in_order(stmt) if isinstance(c.func, ast.Attribute)
+    calls = [c for c in _calls_in_order(stmt, lambdas=True) if isinstance(c.func, ast.Attribute)
              and c.func.attr in _LOOKUPS and isinstance(c.func.value, ast.Name) and c.func.value.id == "spin"]
     calls.sort(key=lambda c: c.col_offset)
     for call, row in zip(calls, rows):

@@ -34,6 +34,7 @@ PUB main | i, k
   i := 0
   r[16] := i OR= tick(40)
   r[17] := i AND= a / 2
+  r[18] := lookup(a : 1, lookupz(b : 9, -7..0, 5), tick(50))
   r[38] := calls
   r[39] := k
 PRI tick(v)
