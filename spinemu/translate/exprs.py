@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 from ..frontend import ast as A
 from ..frontend.constants import float_bits
-from .order import _EVENT_BUILTINS, ASSIGNING_UNARY, EvalOrder
+from .order import _EVENT_BUILTINS, _PAID_BUILTINS, ASSIGNING_UNARY, EvalOrder
 
 __all__ = ["X", "ExprTranslator", "PREC"]
 
@@ -136,7 +136,11 @@ class ExprTranslator(EvalOrder):
         if t is A.NameRef:
             return self.lookup(node.name, node)[0] == "method"
         if t is A.Builtin:
-            return node.name.lower() in _EVENT_BUILTINS
+            return node.name.lower() in _EVENT_BUILTINS or node.name.lower() in _PAID_BUILTINS
+        if t is A.Binary:
+            return node.op in ("/", "//")
+        if t is A.Unary:
+            return node.op == ">|"
         return t in (A.RegRef, A.SprRef) or t is A.Lookup and self.lazy_items(node)
 
     def line(self, text: str, event: bool) -> str:
@@ -364,7 +368,7 @@ class ExprTranslator(EvalOrder):
         if op == "||":
             return X(f"abs({self.wrapped(x).text})", wrapped=False)
         if op in _HELPER_UN:
-            return X(f"{_HELPER_UN[op]}({x.text})")
+            return self.event(X(f"{_HELPER_UN[op]}({x.text})"), node) if op == ">|" else X(f"{_HELPER_UN[op]}({x.text})")
         if op in ASSIGNING_UNARY:
             return self.pre_op(A.PreOp(node.pos, op, node.operand))
         self.unsupported(f"the operator {node.op}", node)
@@ -415,7 +419,8 @@ class ExprTranslator(EvalOrder):
         if op == "<#":
             return X(f"min({self.value_x(left)}, {self.value_x(right)})")
         if op in _HELPER_BIN:
-            return X(f"{_HELPER_BIN[op]}({left.text}, {right.text})")
+            x = X(f"{_HELPER_BIN[op]}({left.text}, {right.text})")
+            return self.event(x, node) if op in ("/", "//") and node.pos is not None else x
         self.unsupported(f"the operator {node.op}", node)
 
     def value_x(self, x: X) -> str:
@@ -436,8 +441,10 @@ class ExprTranslator(EvalOrder):
             value = self.binop(op, X(text), value, node.value)
         tmp = self.temp("value")
         reads = node.op != ":="
-        self.hoisted.append(self.line(f"{tmp} = {self.wrapped(value).text}", reads and self.store_event(node.target, True)))
-        self.hoisted.append(self.line(f"{text} = {tmp}", self.store_event(node.target, False) if reads else
+        paid = node.op in ("/", "//")       # (the helper's line is the timed event)
+        self.hoisted.append(self.line(f"{tmp} = {self.wrapped(value).text}",
+                                      reads and (paid or self.store_event(node.target, True))))
+        self.hoisted.append(self.line(f"{text} = {tmp}", self.store_event(node.target, False) and not paid if reads else
                                       isinstance(node.target, (A.RegRef, A.SprRef))))
         return X(tmp, saved=True)
 

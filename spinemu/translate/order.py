@@ -49,6 +49,9 @@ _HUB_READERS = frozenset({"strsize", "strcomp", "clkfreq", "clkmode", "chipver"}
 #: built-ins whose bytecode is a timed event (costs.py): waits, cog starts and stops, clock changes
 _EVENT_BUILTINS = frozenset(("waitcnt", "waitpeq", "waitpne", "waitvid", "cogstop", "cognew", "coginit",
                              "clkset", "reboot"))
+#: built-ins a helper pays value-dependent cycles for (their bytecode is a timed event too)
+_PAID_BUILTINS = frozenset(("strsize", "strcomp", "bytefill", "wordfill", "longfill", "bytemove", "wordmove",
+                            "longmove"))
 #: the unary operators that assign their variable (``~x`` sign-extends x in place)
 ASSIGNING_UNARY = frozenset({"~", "~~", "?"})
 
@@ -77,6 +80,7 @@ NONE = Effects()
 _STRINGS = "v:@strings"         # string() literals in the image: only a write through an address reaches them
 _CALL = Effects(frozenset({HUB, REG}), frozenset({HUB, REG}), calls=True, paid=True, events=True)
 _PAID = Effects(paid=True)
+_PAID_EVENT = Effects(paid=True, events=True)     # a helper pays its cycles: a timed event of its statement
 #: operators whose cycles depend on their operands (spinemu.translate.spin pays them when it runs)
 _PAID_BINARY = frozenset(("/", "//"))
 _PAID_UNARY = frozenset((">|",))
@@ -172,10 +176,12 @@ class EvalOrder:
             name = node.name.lower()
             inner = self.effects(node.args or [])
             if name not in PURE_BUILTINS:
-                return inner | (_CALL if name in _EVENT_BUILTINS else replace(_CALL, events=False))
+                return inner | (_CALL if name in _EVENT_BUILTINS or name in _PAID_BUILTINS
+                                else replace(_CALL, events=False))
             if name in _HUB_READERS:
                 literal = node.args and all(isinstance(a, A.Builtin) and a.name.lower() == "string" for a in node.args)
-                return inner | Effects(frozenset({_STRINGS if literal else HUB}), paid=name in ("strsize", "strcomp"))
+                paid = name in ("strsize", "strcomp")
+                return inner | Effects(frozenset({_STRINGS if literal else HUB}), paid=paid, events=paid)
             return inner
         if t is A.Assign:
             return self.effects(node.value) | self.effects(node.target) | self.writing(node.target)
@@ -192,8 +198,8 @@ class EvalOrder:
             return NONE
         if t is Given:
             return NONE if node.node is None or node.x.saved else self.effects(node.node)
-        e = _PAID if (t is A.Binary and node.op in _PAID_BINARY or t is A.Unary and node.op in _PAID_UNARY
-                      or t is A.Lookup) else NONE
+        e = _PAID_EVENT if (t is A.Binary and node.op in _PAID_BINARY or t is A.Unary and node.op in _PAID_UNARY) \
+            else _PAID if t is A.Lookup else NONE
         if t is A.Lookup and self.lazy_items(node):
             e = replace(e, events=True)
         for f in getattr(node, "__dataclass_fields__", ()):

@@ -105,6 +105,13 @@ def then(k, value):
     return value
 
 
+def pay_call(k, helper, *args):
+    """Charge ``k`` (as :func:`tick`), then call ``helper`` (one that pays value-dependent cycles, such as
+    ``spin.div``): the weaver's form of such a call after another timed event of its statement."""
+    tick(k)
+    return helper(*args)
+
+
 def add(k: int) -> None:
     """Charge ``k`` cycles that need no alignment (a taken jump's extra cost)."""
     RT.cog.t += k

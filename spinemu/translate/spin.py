@@ -665,6 +665,6 @@ def _frame_base(pyframe) -> int:
         if depth is None:
             depth = g.get("SPIN_CALL_DEPTHS", {}).get(caller.f_lineno, 0)
             if depth.__class__ is list:     # a call the weaver did not wrap: the line's first
-                depth = depth[0][1]
+                depth = next((e[1] for e in depth if e[1] is not None), 0)
         dbase += g["SPIN_FRAME_SIZES"][caller.f_code.co_name] + depth + 8
     return dbase & 0xFFFF

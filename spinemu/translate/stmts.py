@@ -31,9 +31,9 @@ from ..compiler.code import CodeBuffer, Label
 from ..compiler import stmts as cstmts
 from ..frontend import ast as A
 from ..frontend.ast import key
-from .costs import Op, call_depths, ceil16, chain, drop_result_delta, price, jump_op, split, split_read
+from .costs import Op, anchor_at, call_depths, ceil16, chain, drop_result_delta, price, jump_op, split, split_read
 from .exprs import Event, ExprTranslator, X
-from .order import _EVENT_BUILTINS, Given
+from .order import _EVENT_BUILTINS, _PAID_BUILTINS, Given
 from .loops import LoopTranslator
 
 __all__ = ["MethodTranslator"]
@@ -159,7 +159,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                 return len(pubs[method - 1].params), self.names.child_method(sym.name, pubs[method - 1].name)
         return 0, None
 
-    def note_depths(self, lines, data: bytes = None, runs=None) -> None:
+    def note_depths(self, lines, data: bytes = None, runs=None, ops=None) -> None:
         """Record the stack bytes in use at the calls of ``data`` (the piece compiled last), for ``lines``.
 
         One number when every call of the statement starts at the same depth;
@@ -167,9 +167,25 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         (``f(g(x), g(y))``: g above f's frame, the second g one long higher,
         then f); the weaver hands each call its own depth.  ``runs``: the
         cycles each call after the first pays before it starts (a statement
-        whose timed events are calls: ``[(method, depth, cycles), ...]``).
+        whose timed events are calls: ``[(method, depth, cycles), ...]``);
+        ``ops``: the statement's priced bytecode, whose helper calls that pay
+        cycles (``("@div", None, cycles)``) are listed among the calls.
         """
         calls = call_depths(self.last_data if data is None else data, self.callee)
+        if runs is not None and ops is not None:
+            listed, found = [], iter(calls)
+            for o in ops:
+                if o.kind == "call":
+                    d, name = next(found, (0, None))
+                    listed.append((name, d + self.held))
+                elif o.kind == "paid":
+                    listed.append(("@" + o.helper, None))
+            if len(runs) == len(listed):
+                depth = [(name, d, run) for (name, d), run in zip(listed, runs)]
+                for line in lines:
+                    if line is not None:
+                        self.code.call_depths[line] = depth
+                return
         if not calls:
             return
         if runs is not None and len(runs) == len(calls):
@@ -308,8 +324,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         it is an event itself (a call as a statement): it stays on the last line.
         """
         saved = self.event_mode, self.top_node
-        kinds = _events(ops)
-        self.event_mode = not _one_event(ops) and not all(k == "call" for k in kinds)
+        self.event_mode = not _one_event(ops) and not _calls_only(ops)
         self.top_node = top
         try:
             yield self.event_mode
@@ -428,9 +443,9 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                 self.charge(line, "b", run)
             self.note_depths(lines, data)
             return runs[-1]
-        if len(kinds) > 1 and all(k == "call" for k in kinds):
+        if not _one_event(ops) and _calls_only(ops):
             self.charge(first, "b", runs[0])
-            self.note_depths(lines, data, [None] + [chain(r) for r in runs[1:-1]])
+            self.note_depths(lines, data, [None] + [chain(r) for r in runs[1:-1]], ops)
             return runs[-1]
         self.note_depths(lines, data)
         pre, post = split(ops)
@@ -455,9 +470,9 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             self.note_depths(lines, data)
             return
         runs, kinds = _segments(ops)
-        if len(kinds) > 1 and all(k == "call" for k in kinds):
+        if not _one_event(ops) and _calls_only(ops):
             self.charge(first, "b", runs[0])
-            self.note_depths(lines, data, [None] + [chain(r) for r in runs[1:-1]])
+            self.note_depths(lines, data, [None] + [chain(r) for r in runs[1:-1]], ops)
             self.charge(last, "p", runs[-1])
             return
         self.note_depths(lines, data)
@@ -546,7 +561,8 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         aug = op in _PY_AUG and not local and not value.boolean
         text = self.place(target, reuse or not aug)
         value = self.value_first(value_node, value, target, mark, reuse or not aug, reads_target=True)
-        register = isinstance(target.expr if isinstance(target, A.Paren) else target, (A.RegRef, A.SprRef))
+        register = isinstance(target.expr if isinstance(target, A.Paren) else target, (A.RegRef, A.SprRef)) \
+            or op in ("/", "//")            # (the line whose helper pays the division is the timed event)
         if aug:
             self.hoisted.append(self.line(f"{text} {op}= {value.text}", register))
             return text
@@ -599,7 +615,8 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
     # ------------------------------------------------------------------ builtins
     def x_Builtin(self, node) -> X:
         x = self.builtin_x(node)
-        return self.event(x, node) if node.name.lower() in _EVENT_BUILTINS else x
+        name = node.name.lower()
+        return self.event(x, node) if name in _EVENT_BUILTINS or name in _PAID_BUILTINS else x
 
     def builtin_x(self, node) -> X:
         name = node.name.lower()
@@ -832,24 +849,37 @@ def _events(ops) -> list:
     return [o.kind for o in ops if o.kind]
 
 
+def _calls_only(ops) -> bool:
+    """Are the timed events of ``ops`` all calls of methods or of helpers that pay cycles (the weaver
+    pays each one's run as it starts: ``call_at(..., spin_pay=k)``, ``pay_call(k, spin.div, a, b)``)?"""
+    return all(k in ("call", "paid") for k in _events(ops))
+
+
 def _one_event(ops) -> bool:
     """Can one charge before and one after place every timed event of ``ops`` (costs.split, split_read)?
 
     Yes for one event, and for a register read followed by one other event
-    (the read pays from itself up to the other, as in ``waitcnt(cnt + x)``).
+    (the read pays from itself up to the other, as in ``waitcnt(cnt + x)``),
+    with any bytecodes a helper pays (a division) before the charge's cut.
     """
-    kinds = _events(ops)
+    j = anchor_at(ops)
+    if j is None:
+        return True
+    if any(o.kind == "paid" for o in ops[j + 1:]):
+        return False            # a helper would add its cycles before the charge after the anchor is paid
+    kinds = [k for k in _events(ops) if k != "paid"]
     return len(kinds) <= 1 or len(kinds) == 2 and kinds[0] == "read" and kinds[1] != "read"
 
 
 def _segments(ops) -> tuple:
-    """``(runs, kinds)``: ``ops`` cut at each timed event: a call or a register write after its bytecode
-    (the callee runs, the pins change, at its end), a register read, a wait, a cog start or stop or a
+    """``(runs, kinds)``: ``ops`` cut at each timed event: a call, a register write or a bytecode a helper
+    pays (a division) after its bytecode (the callee runs, the pins change, the helper adds its cycles,
+    at its end), a register read, a wait, a cog start or stop or a
     lookup paid item by item before it; ``runs`` has one run more than ``kinds``.  Waits are paid by
     their helper."""
     runs, kinds, run = [], [], []
     for o in ops:
-        if o.kind in ("call", "write"):
+        if o.kind in ("call", "write", "paid"):
             run.append(o)
             runs.append(run)
             run = []

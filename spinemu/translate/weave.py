@@ -45,6 +45,10 @@ __all__ = ["prepare", "load_package"]
 _TICK, _TICK_AT, _TICK_READ, _ADD = "__spin_tick", "__spin_tick_at", "__spin_tick_read", "__spin_add"
 _CALL_AT = "__spin_call_at"
 _THEN = "__spin_then"
+_PAY_CALL = "__spin_pay_call"
+#: spin helpers that pay cycles depending on values (costs.PAID_HELPERS)
+_PAID_HELPERS = frozenset(("div", "mod", "encode", "strsize", "strcomp", "bytefill", "wordfill", "longfill",
+                           "bytemove", "wordmove", "longmove"))
 
 
 def _call(name, args, anchor):
@@ -94,6 +98,9 @@ def _calls_in_order(stmt, lambdas: bool = False) -> list:
 
 def _method_name(call):
     f = call.func
+    if isinstance(f, ast.Attribute) and isinstance(f.value, ast.Name) and f.value.id == "spin" \
+            and f.attr in _PAID_HELPERS:
+        return "@" + f.attr             # a helper that pays value-dependent cycles (spin.div ...)
     if isinstance(f, ast.Attribute) and f.attr == "trap" and call.args and isinstance(call.args[0], ast.Attribute):
         return call.args[0].attr        # spin.trap(self.f, x): Spin's \f(x)
     return f.attr if isinstance(f, ast.Attribute) else None
@@ -112,11 +119,18 @@ def _wrap_calls(stmt, depths: list, k: int = 0) -> int:
         j = next((j for j in range(k, len(depths)) if depths[j][0] == name), None)
         if j is None:
             continue
+        pay = depths[j][2] if len(depths[j]) > 2 else None      # cycles since the event before
+        if name.startswith("@"):
+            if pay is not None:
+                call.args = [ast.copy_location(ast.Constant(pay), call), call.func] + call.args
+                call.func = ast.copy_location(ast.Name(_PAY_CALL, ast.Load()), call)
+            k = j + 1
+            continue
         call.args = [ast.copy_location(ast.Constant(depths[j][1]), call), call.func] + call.args
         call.func = ast.copy_location(ast.Name(_CALL_AT, ast.Load()), call)
-        if len(depths[j]) > 2 and depths[j][2] is not None:   # cycles since the statement's call before
-            pay = ast.keyword("spin_pay", ast.copy_location(ast.Constant(depths[j][2]), call))
-            call.keywords.append(ast.copy_location(pay, call))
+        if pay is not None:
+            kw = ast.keyword("spin_pay", ast.copy_location(ast.Constant(pay), call))
+            call.keywords.append(ast.copy_location(kw, call))
         k = j + 1
     return k
 
@@ -227,6 +241,7 @@ def prepare(cls) -> None:
     module.__dict__[_ADD] = runtime.add
     module.__dict__[_CALL_AT] = spin.call_at
     module.__dict__[_THEN] = runtime.then
+    module.__dict__[_PAY_CALL] = runtime.pay_call
     install(module.__dict__)
     depths = getattr(module, "SPIN_CALL_DEPTHS", {})
     lookups = getattr(module, "SPIN_LOOKUPS", {})

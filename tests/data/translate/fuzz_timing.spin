@@ -33,6 +33,11 @@ PUB main | i
   case 3
     (outa[7..4] := 3): r[7]++
   r[7] := lookdown(a : 1, (outa[3..0] := 5), 3)
+  a := pin(24) / 3 + pin(25) // a
+  longfill(@r, ~outa[2], 2)
+  a := pin(26) + (outa //= 7) + spr[4]
+  a := cnt
+  waitcnt(a += clkfreq / 1000)
   return pin(14) + pin(15)
 PRI pin(v)
   outa[v & 7] := 1
