@@ -339,7 +339,8 @@ class ExprTranslator(EvalOrder):
                 self.unsupported(f"a call of '{node.name}', which is not a method", node)
             return f"self.{self.names.attr(node.name)}", [self.wrapped(x).text for x in self.operands(node.args)]
         method = self.names.child_method(node.obj, node.method)
-        if node.index is None or self.constant(node.index) is not None:
+        index = self.effects(node.index)
+        if node.index is None or self.constant(node.index) is not None and not (index.any or index.paid):
             args = [self.wrapped(x).text for x in self.operands(node.args)]
             return f"{self.child(node, node.index)}.{method}", args
         *args, index = self.operands(node.args + [node.index], reorder_after=len(node.args))

@@ -64,6 +64,7 @@ PUB main | i, j, p
   r[30] := (x := 100) / bumpx // x
   r[31] := x ** (x := 1000) + x
   r[32] := (x := -7) >< 8 + ^^x + |<x + >|x
+  r[33] := kid[(constant(TRUE * $CBF2) >> 1) // 3].put(bump)
 PRI bump
   x += 10
   return x
