@@ -147,11 +147,11 @@ def shrink(program, check=check_translate):
     keep = {(name, line.strip()) for name, text in program.files.items() for line in text.split("\n")
             if _SETS_LOCAL.match(line)}
 
-    inner = check
+    checked = check
 
     def guarded(cand, ctx):
         present = {(name, line.strip()) for name, text in cand.files.items() for line in text.split("\n")}
-        return inner(cand, ctx) if keep <= present else None
+        return checked(cand, ctx) if keep <= present else None
 
     program = reduce(program, guarded)
     check = guarded
