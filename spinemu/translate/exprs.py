@@ -461,6 +461,11 @@ class ExprTranslator(EvalOrder):
             tmp = self.temp("value")
             self.hoisted.append(self.line(f"{tmp} = {new}", self.store_event(node.target, True)))
             self.hoisted.append(self.line(f"{old} = {tmp}", self.store_event(node.target)))
+            target = node.target.expr if isinstance(node.target, A.Paren) else node.target
+            if node.op in ("++", "--") and isinstance(target, A.RegRef) and target.bit is not None:
+                kept = self.temp("value")       # ++/-- of a bit field leaves the field as stored
+                self.hoisted.append(f"{kept} = {old}")
+                return X(kept, saved=True)
             return X(tmp, saved=True)
         text = self.step(node.target, node.op, reuse=True)
         return self.reread(node.target, text)

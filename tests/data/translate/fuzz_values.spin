@@ -35,6 +35,8 @@ PUB main | i, k
   r[16] := i OR= tick(40)
   r[17] := i AND= a / 2
   r[18] := lookup(a : 1, lookupz(b : 9, -7..0, 5), tick(50))
+  outa[7..0] := 15
+  r[19] := ++outa[3..0] + --outa[7..4] << 8
   r[38] := calls
   r[39] := k
 PRI tick(v)
