@@ -264,11 +264,13 @@ class EvalOrder:
         return self.effects(node).any
 
     # ------------------------------------------------------------------ keeping the order
-    def disturbs(self, node, later, reorder: bool = False) -> bool:
+    def disturbs(self, node, later, reorder: bool = False, hoisted: bool = False) -> bool:
         """Must the value of ``node`` be saved before the ``later`` operands (which Spin evaluates after it)?
 
         ``reorder``: Python evaluates ``later`` before ``node``'s text (else
-        only their hoisted statements come first).
+        only their hoisted statements come first); ``hoisted``: statements
+        were written for ``later`` (a value saved inside them), so what they
+        do may all run first.
         """
         mine, theirs = self.effects(node), self.effects(later)
         if reorder:
@@ -276,7 +278,7 @@ class EvalOrder:
                     mine.paid and theirs.events:
                 return True                     # its call would come after theirs, what it pays after an event
             return overlap(mine.reads, theirs.writes)
-        if not (theirs.hoists or self.event_mode and theirs.events):
+        if not (theirs.hoists or hoisted or self.event_mode and theirs.events):
             return False
         # their statements come first: a call of its own must not move after them, nor what it pays
         # (a division's loop) after a timed event of theirs
@@ -299,18 +301,22 @@ class EvalOrder:
                 in front of it (``obj[i].m(a)``: the index, last in Spin's order).
         """
         xs = list(xs)
+        end = len(self.hoisted)
         for i in reversed(range(len(nodes) - 1)):
             if xs[i].const is not None or xs[i].saved:
                 continue
             later = nodes[i + 1:]
+            # statements written for the later operands (their side effects, or values saved inside them
+            # to keep their own order) all run before this operand's text
+            hoisted = end > marks[i]
             if reorder_after is not None and i < reorder_after:
-                moved = self.disturbs(nodes[i], [nodes[reorder_after]], reorder=True)
-                rest = nodes[i + 1:reorder_after] + nodes[reorder_after + 1:]
-                must = moved or self.disturbs(nodes[i], rest) or self.disturbs(nodes[i], later)
+                must = self.disturbs(nodes[i], [nodes[reorder_after]], reorder=True) or \
+                    self.disturbs(nodes[i], later, hoisted=hoisted)
             else:
-                must = self.disturbs(nodes[i], later)
+                must = self.disturbs(nodes[i], later, hoisted=hoisted)
             if must:
                 xs[i] = self.save(xs[i], marks[i])
+                end += 1
         return xs
 
     def operands(self, nodes, reorder_after=None) -> list:
@@ -368,8 +374,8 @@ class EvalOrder:
         order in ``T = V`` would be.
         """
         nodes = index_nodes(target)
-        return any(self.effects(n).hoists or self.effects(n).events and self.constant(n) is None
-                   or reuse and self.constant(n) is None and self._unstable(n, target) for n in nodes)
+        return any(self.effects(n).hoists or self.effects(n).events or reuse and self._unstable(n, target)
+                   for n in nodes)
 
     def value_first(self, value_node, value, target, mark: int, reuse: bool, reads_target: bool = False):
         """Save the value of an assignment to ``target`` if Python would not compute it first, as Spin does.

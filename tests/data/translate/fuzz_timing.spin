@@ -36,6 +36,8 @@ PUB main | i
   a := pin(24) / 3 + pin(25) // a
   longfill(@r, ~outa[2], 2)
   a := pin(26) + (outa //= 7) + spr[4]
+  r[7 // 3] := pin(27)
+  r[5] := pin(28) <- (pin(29) * r[(a >> 1) // 3] + pin(30)) ^ r[pin(31) // 4]
   a := cnt
   waitcnt(a += clkfreq / 1000)
   return pin(14) + pin(15)
