@@ -367,6 +367,8 @@ def call_depths(data: bytes, callee) -> list:
             depth += 1 if frame & 1 == 0 else 0
         elif 0x40 <= op < 0xE0 or op in (0x3D, 0x3E, 0x3F, 0x26):
             depth += _access_effect(data, i, op)
+        elif 0x10 <= op <= 0x13:            # a lookup item compared: popped (a match ends where LOOK_DONE does)
+            depth -= entry.pops
         elif entry.pops is not None and entry.pushes is not None:
             depth += entry.pushes - entry.pops
         i += length

@@ -37,8 +37,11 @@ PUB main | i, k
   r[18] := lookup(a : 1, lookupz(b : 9, -7..0, 5), tick(50))
   outa[7..0] := 15
   r[19] := ++outa[3..0] + --outa[7..4] << 8
+  r[20] := lookup(2 : 4, 1..5) - where       ' a frame's address after a lookup on the stack
   r[38] := calls
   r[39] := k
+PRI where | l[2]
+  return @l
 PRI tick(v)
   calls++
   return v
