@@ -122,10 +122,18 @@ class Code:
         entry = self.charges.setdefault(line, {})
         return entry.setdefault(slot, [[], 0])
 
-    def charge(self, line: int, slot: str, ops) -> None:
+    def charge(self, line: int, slot: str, ops, first: bool = False) -> None:
         """Charge a run of bytecodes ``ops`` at ``slot`` of ``line`` (b: before, a: after, e: else/exit,
-        t: each test of a ``while``, p: the statement's own rest, before it stores or returns)."""
-        self._slot(line, slot)[0].extend(ops)
+        t: each test of a ``while``, p: the statement's own rest, before it stores or returns).
+
+        ``first``: these bytecodes run before the ones charged there already
+        (a condition's jump before the first statement of its body).
+        """
+        run = self._slot(line, slot)[0]
+        if first:
+            run[:0] = ops
+        else:
+            run.extend(ops)
 
     def charge_add(self, line: int, slot: str, cycles: int) -> None:
         """Charge plain cycles (no fetch alignment) at ``slot`` of ``line``."""
@@ -136,8 +144,9 @@ class Code:
         self.charges.setdefault(line, {})["mid"] = list(ops)
 
     def charge_each(self, line: int, runs) -> None:
-        """Charge one run before each operand of the ``or`` in the condition of the ``if`` on ``line``."""
-        self.charges.setdefault(line, {})["each"] = [list(r) for r in runs]
+        """Charge one run before each operand of the ``or`` in the condition of the ``if`` on ``line``
+        (a pair of runs: before the operand, and once its value is computed)."""
+        self.charges.setdefault(line, {})["each"] = [r if isinstance(r, tuple) else list(r) for r in runs]
 
     def charge_table(self) -> dict:
         """``{line: (before, after, else[, test[, post]])}``, each ``(aligned, extra[, access])`` or None.
@@ -164,7 +173,8 @@ class Code:
                 row[0] = (b[0], b[1], b[2] if len(b) > 2 else None, chain(mid))
             each = entry.get("each")
             if each:
-                row[3] = tuple((chain(r), 0) for r in each)
+                row[3] = tuple(((chain(r[0]), 0), (chain(r[1]), 0)) if isinstance(r, tuple) else (chain(r), 0)
+                               for r in each)
             while len(row) > 3 and not row[-1]:
                 row.pop()
             if any(row):

@@ -45,6 +45,11 @@ _RESERVED_LOCALS = {"self", "spin", "cog", "wrap", "range", "max", "min", "abs",
 _RESERVED_ATTRS = {"at", "addr", "object_base", "string", "_pbase", "_vbase", "mro", "spin"}
 
 
+#: the notes of the jumps the compiler makes for statements (compiler/stmts.py)
+_JUMP_NOTES = frozenset(("if", "to end of if", "repeat", "repeat n", "repeat while", "repeat from",
+                         "case value", "case range", "next", "quit"))
+
+
 class TranslateError(SpinError):
     """A Spin construct the translator does not handle (it names the construct and its place)."""
 
@@ -200,14 +205,12 @@ class ObjectTranslator:
         if table is None:
             mc = _StringTracker(self.oc, method)
             buf = mc.compile()
-            info = self.infos[key(method.name)]
-            _spans, end = buf.layout(info.offset)
-            pool = end - sum(len(s) for s in buf.strings)
-            offsets, run = [], pool
-            for s in buf.strings:
-                offsets.append(run)
-                run += len(s)
-            table = {nid: offsets[i] for nid, i in mc.string_index.items()}
+            spans, _end = buf.layout(self.infos[key(method.name)].offset)
+            # each push of a string's address, in the order compiled: the compiler's own pool
+            # addresses (some strings share one, as in OpenSpin: compiler/code.py)
+            pushes = [((sp.data[1] & 0x7F) << 8) | sp.data[2] for sp in spans
+                      if sp.note == "string" and sp.pos is not None]
+            table = {nid: pushes[i] for nid, i in mc.string_index.items()}
             self._strings[key(method.name)] = table
         return table[id(node)]
 
@@ -222,14 +225,26 @@ class ObjectTranslator:
         self._index_spans()
         return bytes(self._bytes.get((pos.line, pos.col), b""))
 
+    def long_jumps_at(self, pos, note: str) -> list:
+        """For each jump the compiler made at ``pos`` with ``note`` ("if", "repeat", "case value" ...), in
+        order: is it the two-byte form?
+
+        Read from the compiled object: a jump's size depends on the layout of
+        everything between it and its target, other jumps included.
+        """
+        self._index_spans()
+        return list(self._jumps.get((pos.line, pos.col, note), ()))
+
     def _index_spans(self) -> None:
         if self._offsets is None:
-            self._offsets, self._bytes = {}, {}
+            self._offsets, self._bytes, self._jumps = {}, {}, {}
             for span in self.cobj.spans:
                 if span.pos is not None and span.data:
                     at = (span.pos.line, span.pos.col)
                     self._offsets.setdefault(at, span.offset)
                     self._bytes.setdefault(at, bytearray()).extend(span.data)
+                    if span.note in _JUMP_NOTES:
+                        self._jumps.setdefault(at + (span.note,), []).append(len(span.data) > 2)
 
     def method_end(self, method) -> int:
         return self.infos[key(method.name)].end
@@ -306,7 +321,8 @@ class ObjectTranslator:
         code.raw(f"SPIN_METHODS = {({self.names.attr(m.name): m.index for m in self.cobj.methods})!r}")
         code.raw(f"SPIN_CALL_DEPTHS = {dict(sorted(code.call_depths.items()))!r}")
         if code.lookups:
-            code.raw("# lookup/lookdown lines: cycles per item, of LOOK_DONE, and what a match adds per item")
+            code.raw("# lookup/lookdown lines, each lookup on the line from the left: cycles per item, of")
+            code.raw("# LOOK_DONE, and what a match adds per item")
             code.raw("SPIN_LOOKUPS = {")
             for line, row in sorted(code.lookups.items()):
                 code.raw(f"    {line}: {row!r},")

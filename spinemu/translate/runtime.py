@@ -95,6 +95,23 @@ def tick_read(k, access, rest: int) -> None:
     RT.pending = rest
 
 
+def then(k, value):
+    """Charge ``k`` (as :func:`tick`, ``None``: nothing) once ``value`` is computed; returns it.
+
+    The weaver writes a case value that calls a method as ``then(k, x == self.f())``.
+    """
+    if k is not None:
+        tick(k)
+    return value
+
+
+def pay_call(k, helper, *args):
+    """Charge ``k`` (as :func:`tick`), then call ``helper`` (one that pays value-dependent cycles, such as
+    ``spin.div``): the weaver's form of such a call after another timed event of its statement."""
+    tick(k)
+    return helper(*args)
+
+
 def add(k: int) -> None:
     """Charge ``k`` cycles that need no alignment (a taken jump's extra cost)."""
     RT.cog.t += k

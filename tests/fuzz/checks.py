@@ -90,4 +90,6 @@ def check_reference(program, ctx: dict) -> str | None:
     return None
 
 
-CHECKS = {"compile": check_compile, "reference": check_reference}
+from .translation import check_translate  # noqa: E402 - the Spin->Python translation (tests/fuzz/translation.py)
+
+CHECKS = {"compile": check_compile, "reference": check_reference, "translate": check_translate}
