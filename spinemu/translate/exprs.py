@@ -44,6 +44,7 @@ class X:
     boolean: bool = False
     const: object = None          # its value, if a constant
     saved: bool = False           # a temporary assigned once (nothing can change it)
+    truthy: bool = False          # a Python and/or: its value is an operand's, true or false only as a condition
 
     def paren(self, prec: int) -> str:
         return f"({self.text})" if self.prec < prec else self.text
@@ -126,7 +127,7 @@ class ExprTranslator(EvalOrder):
             return x
         tmp = self.temp("value")
         self.hoisted.append(Event(f"{tmp} = {x.text}"))
-        return X(tmp, wrapped=x.wrapped, boolean=x.boolean, saved=True)
+        return X(tmp, wrapped=x.wrapped, boolean=x.boolean, truthy=x.truthy, saved=True)
 
     def is_event(self, node) -> bool:
         """Is evaluating ``node`` itself a timed event (its last bytecode a call, a wait, a cog start ...)?"""
@@ -392,14 +393,14 @@ class ExprTranslator(EvalOrder):
                 # `a and b / c` pays for the division
                 sym = "&" if op == "AND" else "|"
                 p = PREC[sym]
-                lt = left.paren(p + 1) if left.boolean else f"bool({self.wrapped(left).text})"
-                rt = right.paren(p + 1) if right.boolean else f"bool({self.wrapped(right).text})"
+                lt, rt = (x.paren(p + 1) if x.boolean and not x.truthy
+                          else f"bool({x.text if x.boolean else self.wrapped(x).text})" for x in (left, right))
                 return X(f"{lt} {sym} {rt}", p, boolean=True)
             word = op.lower()
             lp, rp = PREC[word], PREC[word] + 1
             lt = left.paren(lp) if left.boolean else self.wrapped(left).paren(lp)
             rt = right.paren(rp) if right.boolean else self.wrapped(right).paren(rp)
-            return X(f"{lt} {word} {rt}", lp, boolean=True)
+            return X(f"{lt} {word} {rt}", lp, boolean=True, truthy=True)
         if op in _PY_BIN:
             p = PREC[op]
             wrapped = op in ("&", "|", "^") and left.wrapped and right.wrapped and not left.boolean \

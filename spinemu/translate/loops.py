@@ -73,7 +73,7 @@ class LoopTranslator:
                 # a call (a register read ...) on a line of its own: paid before it, the rest before the loop
                 tmp = self.temp("count")
                 self.hoisted.append(self.line(f"{tmp} = {n.text}", self.is_event(st.count)))
-                n = X(tmp, wrapped=n.wrapped, boolean=n.boolean, saved=True)
+                n = X(tmp, wrapped=n.wrapped, boolean=n.boolean, truthy=n.truthy, saved=True)
         count = n.text if c is not None and c >= 0 else f"spin.u32({self.wrapped(n).text})"
         first, last = self.emit_hoisted(st)
         line = self.emit(f"for _ in range({count}):", st)

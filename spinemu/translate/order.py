@@ -288,7 +288,7 @@ class EvalOrder:
         """Save ``x`` to a temporary whose statement goes at ``at`` in the hoisted list; the temporary's X."""
         tmp = self.temp("value")
         self.hoisted.insert(at, f"{tmp} = {x.text}")
-        return type(x)(tmp, wrapped=x.wrapped, boolean=x.boolean, saved=True)
+        return type(x)(tmp, wrapped=x.wrapped, boolean=x.boolean, truthy=x.truthy, saved=True)
 
     def keep(self, nodes, xs, marks, reorder_after=None) -> list:
         """Save each translated operand that a later one could disturb (see :meth:`disturbs`).

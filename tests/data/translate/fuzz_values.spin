@@ -16,7 +16,6 @@ PUB main | i, k
   r[4] := 1 << ($8000_0000 ^ b)
   r[5] := (1 << 32 + a) OR tick(1)
   r[6] := lookup(a : 5, 6, 7) + lookdown(b : 1, 5, 9) + lookupz(lookdownz(a : 1, 2, 3) : 10, 20, 30)
-  case a
   if strsize(string("hello"))
     r[7] := strcomp(string("ab"), string("ab"))
   r[8] := (w[strsize(string("x"))] := strsize(string("abcdef")))
