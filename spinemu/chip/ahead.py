@@ -58,9 +58,9 @@ from .control import CogStopped, RebootRequested, Reschedule
 __all__ = ["RunAhead", "_hole_in", "AHEAD", "RO", "SHARED", "NORO", "CLAIM", "REDO", "WANT_RO", "NOPRIV", "RUN_AHEAD"]
 
 #: ``Chip.watch`` bit: the long is in the window of a cog that is running ahead
-AHEAD = 4
+AHEAD = 16
 #: ``Chip.watch`` bit: private blocks may read the long; a write first rolls back every cog ahead
-RO = 8
+RO = 32
 CODE = 2                                    # blockops.CODE: compiled code lies in the long
 _WRITE_CHECKED = AHEAD | CODE | RO
 #: ``Chip.own`` value of a long that more than one cog touched: never claimed again
@@ -117,6 +117,7 @@ class RunAhead:
         #: cogs with an open private stretch (ahead of the scheduler); mutated, never rebound
         self._ahead: list = []
         self._private_ok = False
+        self._handlers_wrapped = False  # (Chip.wrap_handler: then no cog runs ahead)
         self._guard_handlers = None
         self._g_cog = None              # the guarded bytecode running now, and its key
         self._g_key = 0

@@ -134,7 +134,7 @@ class DataOps:
             return self._account(b, op, T.var[op])
         a = b.let(addr)
         if not local:
-            b.deopt(f"{a} < 0x8000 and WATCH[{a} >> 2]")
+            b.deopt(f"{a} >= 0x8000 or WATCH[{a} >> 2]")     # (ROM: the interpreter, and its check)
         if access == 1:
             v = b.pop()
             b.emit(f"if {a} < 0x8000: L[{a} >> 2] = {v}")
@@ -208,7 +208,7 @@ class DataOps:
             if access == 0:                     # not in the window of a cog ahead
                 b.deopt(f"AH and WATCH[{w} >> 2] & {AHEAD}")
             else:                               # writes: leave the block first if the long is watched
-                b.deopt(f"{w} < 0x8000 and WATCH[{w} >> 2]")
+                b.deopt(f"{w} >= 0x8000 or WATCH[{w} >> 2]")
         if access == 0:
             b.push(self._sized_read(size, a))
             return self._account(b, op, rest)

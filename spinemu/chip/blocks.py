@@ -63,12 +63,14 @@ from .blockops import BUSY, CODE, DataOps, _Stop, _is_literal
 from .mathops import BINARY, MASK32, UNARY
 from .spin import random_forward, random_reverse
 
-__all__ = ["BlockCompiler", "MAX_OPS", "HOT", "CODE", "BUSY"]
+__all__ = ["BlockCompiler", "MAX_OPS", "HOT", "CODE", "BUSY", "PROGRAM", "WATCHPOINT"]
 
 #: bytecodes in one block at most
 MAX_OPS = 48
 #: times a block start is reached before it is compiled (cold code stays interpreted)
 HOT = 8
+#: ``Chip.watch`` bits: the program's own code (runtime check), a debugger watchpoint
+PROGRAM, WATCHPOINT = 4, 8
 
 _BASE_LOCALS = {"vbase": "vb", "dbase": "db", "pbase": "pb"}
 #: placeholders in generated text: ``nb + `` in a block that loops, else nothing; and a deopt
@@ -256,7 +258,10 @@ class BlockCompiler(DataOps):
         self.acc = chip.access_at
         self.mem = chip.mem
         self.table = table
-        self.boundaries: set = set()      # addresses a block must start at (busy-loop heads)
+        self.boundaries: set = set(chip.interpret_only)   # addresses a block must start at (busy-loop heads)
+        self.interpret_only = chip.interpret_only          # ... and ones no block may start at
+        self.interpret_calls = chip.interpret_calls        # calls stay interpreted (runtime checks)
+        self.checks = chip.checks if chip.checks is not None and chip.checks.wants("waitcnt-passed") else None
         self.compiled: dict = {}          # start -> end of every compiled block
         self.compiled_private: dict = {}  # ... and of every private variant
         self.env = {
@@ -264,6 +269,7 @@ class BlockCompiler(DataOps):
             "B": table, "STUB": stub, "RF": random_forward, "RR": random_reverse,
             "P": chip._pblocks, "PSTUB": chip._pstub, "CLAIM": CLAIM, "WANT_RO": WANT_RO,
             "AH": chip._ahead, "WANT": chip._want, "HOLE": _hole_in, "OPEN": chip._open,
+            "CHECKS": chip.checks,
         }
         for f, fn in enumerate(BINARY):
             if fn is not None:
@@ -292,6 +298,8 @@ class BlockCompiler(DataOps):
         return self._compile(pc, True)
 
     def _compile(self, pc: int, private: bool):
+        if pc in self.interpret_only:           # (runtime checks: the interpreter's checking handler runs it)
+            return None
         b = _Block(pc, private)
         while True:
             if b.pc >= 0xFFF0 or b.n >= MAX_OPS or (b.n and b.pc in self.boundaries):
@@ -592,12 +600,22 @@ class BlockCompiler(DataOps):
 
     def _waitcnt(self, b: _Block, op: int) -> None:
         """WAITCNT: the next bytecode starts when the wait ends; the block goes on if the rest still fits."""
+        if b.private and self.checks is not None:
+            raise _Stop                         # (its runtime check warns in the exact order)
         T = self.T
         target = b.pop()
         self._terminal_rest(b, op)
         issue = T.waitcnt_issue + T.waitcnt_min
         tn = b.name("t")
-        b.emit(f"{tn} = {b.now(issue + T.waitcnt_after)} + (({target} - ({b.now(issue)})) & 0xFFFFFFFF)")
+        if self.checks is None:
+            b.emit(f"{tn} = {b.now(issue + T.waitcnt_after)} + (({target} - ({b.now(issue)})) & 0xFFFFFFFF)")
+        else:                                           # the runtime check for a count already passed
+            w = b.name("w")
+            b.emit(f"{w} = ({target} - ({b.now(issue)})) & 0xFFFFFFFF")
+            b.emit(f"if {w} & 0x80000000:")
+            b.emit(f"c.pc = {b.pc}", 1)                 # (the check names the WAITCNT before it)
+            b.emit(f"CHECKS.waitcnt(c, {target}, {w}, {b.now()})", 1)
+            b.emit(f"{tn} = {b.now(issue + T.waitcnt_after)} + {w}")
         b.t_start = tn
         # the segment after the wait: its fetches are on the hub window from the end of the wait
         b.waits = True
@@ -636,6 +654,8 @@ class BlockCompiler(DataOps):
             raise _Stop                         # it reads the object's method table
         b.shared = True
         T = self.T
+        if self.interpret_calls:
+            raise _Stop
         if op == 0x06:
             obj = self._byte(b)
         m = self._byte(b)
@@ -658,14 +678,14 @@ class BlockCompiler(DataOps):
         tables = f"WATCH[((pb + {4 * m}) & 0xFFFF) >> 2]"
         if op == 0x06:
             tables += f" | WATCH[((c.pbase + {4 * obj}) & 0xFFFF) >> 2]"
-        b.deopt(f"nsp > 0x8000 or not 0 <= f6 < 0x10000 or AH and ({tables} | WATCH[f6 >> 2]) & {AHEAD}")
+        b.deopt(f"nsp > c.stack_end or not 0 <= f6 < 0x10000 or AH and ({tables} | WATCH[f6 >> 2]) & {AHEAD}")
         if op == 0x06:
             b.emit("c.pbase = pb")
             b.emit("c.pbase_hi = pbh")
             b.emit("c.vbase = vbn")
         b.emit("c.dcall = W[f6 >> 1]")
         b.emit(f"W[f6 >> 1] = {ret}")
-        b.emit("c.dbase = f6 + 2")
+        b.emit("c.dbase = (f6 + 2) & 0xFFFF")
         b.emit("full = (pbh << 16 | pb) + ent")
         b.emit("c.pc = full & 0xFFFF")
         b.emit("c.pc_hi = (full >> 16) & 0xFFFF")

@@ -51,6 +51,8 @@ class Cog:
         # running ahead (ahead.py): the cog's private stack window [wlo, whi) in bytes,
         # and the checkpoint of its open private stretch (None while it is not ahead)
         "wlo", "whi", "cp", "holes", "pfail", "pfail_n",
+        # runtime checks: where the stack array cognew gave the cog ends (else the end of hub RAM)
+        "stack_end", "stack_info",
     )
 
     def __init__(self, cog_id: int):
@@ -72,6 +74,8 @@ class Cog:
         self.holes = []                 # longs inside [wlo, whi) that left the window
         self.pfail = -1                 # where its last private phase did nothing, and how often to skip it
         self.pfail_n = 0
+        self.stack_end = 0x8000
+        self.stack_info = None
         self.reset_registers()
 
     def reset_registers(self) -> None:
