@@ -600,14 +600,14 @@ class BlockCompiler(DataOps):
 
     def _waitcnt(self, b: _Block, op: int) -> None:
         """WAITCNT: the next bytecode starts when the wait ends; the block goes on if the rest still fits."""
-        if b.private and self.checks is not None:
-            raise _Stop                         # (its runtime check warns in the exact order)
         T = self.T
+        issue = T.waitcnt_issue + T.waitcnt_min
+        if b.private and self.checks is not None:   # a count already passed: the interpreter runs it (and
+            b.deopt(f"(({b.peek()}) - ({b.now(issue)})) & 0x80000000")    # warns) in the exact order
         target = b.pop()
         self._terminal_rest(b, op)
-        issue = T.waitcnt_issue + T.waitcnt_min
         tn = b.name("t")
-        if self.checks is None:
+        if self.checks is None or b.private:
             b.emit(f"{tn} = {b.now(issue + T.waitcnt_after)} + (({target} - ({b.now(issue)})) & 0xFFFFFFFF)")
         else:                                           # the runtime check for a count already passed
             w = b.name("w")

@@ -3,7 +3,7 @@
 ``Chip(run_ahead=False)`` is the exact hand-over: every hub access in cycle
 order.  Running ahead (the default) must change nothing a run produces: pin
 trace, hub RAM, end cycle and reason, bytecodes per cog, cog events, or the
-fault's message.
+fault's message, runtime warnings (kind, cog, place, cycle, count).
 """
 from __future__ import annotations
 
@@ -13,16 +13,17 @@ from spinemu.compiler import compile_source
 from multicog_programs import program
 
 
-def outcome(image: bytes, run_ahead: bool, cycles, compat: str = "spinsim"):
-    """Everything one run produces (or the fault it ended with)."""
-    chip = Chip(image, compat=compat, run_ahead=run_ahead)
+def outcome(image: bytes, run_ahead: bool, cycles, compat: str = "spinsim", **kw):
+    """Everything one run produces (or the fault it ended with); ``kw`` go to :class:`Chip`."""
+    chip = Chip(image, compat=compat, run_ahead=run_ahead, **kw)
     try:
         r = chip.run(max_cycles=cycles)
     except Exception as e:          # a fault must be the same fault
         return (type(e).__name__, str(e))
     return {"trace": r.trace.changes, "hub": r.hub, "end_cycle": r.end_cycle, "reason": r.reason,
             "bytecodes": r.stats["bytecodes_per_cog"], "cog_events": r.cog_events,
-            "pasm": r.stats.get("pasm_instructions_per_cog")}
+            "pasm": r.stats.get("pasm_instructions_per_cog"),
+            "warnings": [(w.kind, w.cog, w.addr, w.cycle, w.count) for w in r.runtime_warnings]}
 
 
 def differences(image: bytes, cycles, compat: str = "spinsim") -> list:
