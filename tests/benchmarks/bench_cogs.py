@@ -158,7 +158,7 @@ def main(argv=None):
     with tempfile.TemporaryDirectory() as tmp:
         print(f"busy Spin cogs (0.98 simulated s of work each), best of {a.repeat}:")
         print(" cogs | end to end: wall (x real time), CPU (x)  | run alone, CPU (x)  | per cog per sim. s "
-              "| exact hand-over, CPU (x) | spinsim -p, wall (x)")
+              "| exact hand-over, CPU (x) | spinsim -p, wall (x), CPU (x)")
         for cogs in counts:
             src = os.path.join(tmp, f"busy{cogs}.spin")
             with open(src, "w") as f:
@@ -177,8 +177,8 @@ def main(argv=None):
                 binary = os.path.join(tmp, f"busy{cogs}.binary")
                 with open(binary, "wb") as f:
                     f.write(image)
-                ws, _ = child([a.spinsim, "-p", binary], 1)
-                line += f" | {ws:6.3f} s ({sim / ws:5.2f}x)"
+                ws, cs = child([a.spinsim, "-p", binary], 1)
+                line += f" | {ws:6.3f} s ({sim / ws:5.2f}x), CPU {cs:6.3f} s ({sim / cs:5.2f}x)"
             print(line, flush=True)
         if not a.no_pasm:
             cycles = int(a.pasm_seconds * CLOCK)
