@@ -401,6 +401,11 @@ class BlockCompiler(DataOps):
                 inside += [f"db + ({b.dlo}) < c.wlo", f"db + {b.dhi} > c.whi"]
             if inside:
                 head.append(f"    if AH and ({' or '.join(inside)}): return CLAIM")
+                # ... and not on a hole of it (another cog reads or writes that long, maybe ahead or
+                # read-only: the guarded interpreter checks each access there)
+                s_rng = f"sp + ({lo}), sp + {hi}" if lo < hi else "0, 0"
+                d_locs = f"db, {tuple(sorted(b.locs))}" if locs else "0, ()"
+                head.append(f"    if AH and c.holes and HOLE(c.holes, {s_rng}, {d_locs}): return -1")
             if b.var_reads:
                 longs = " | ".join(f"WATCH[((vb + {off}) & 0xFFFF) >> 2]" for off in sorted(b.var_reads))
                 head.append(f"    if AH and ({longs}) & {AHEAD}: return -1")
