@@ -116,6 +116,8 @@ class WarningLog:
         self.enabled = frozenset(enabled)
         self.items: list = []
         self._places: dict = {}
+        #: warnings reported so far, repeats included (the fast-forward parks no loop that warns)
+        self.total = 0
 
     def wants(self, kind: str) -> bool:
         return kind in self.enabled
@@ -129,6 +131,7 @@ class WarningLog:
         """
         if kind not in self.enabled:
             return None
+        self.total += 1
         where = None
         if self.locate is not None and addr >= 0:
             try:

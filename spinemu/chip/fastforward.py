@@ -217,6 +217,8 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
     acc = chip.access_at
     chip.learn_tracked = 0
     failed = 0
+    wlog = chip.warning_log
+    warned = wlog.total if wlog is not None else 0
     for _ in range(LEARN_BUDGET):
         chip.learn_tracked += 1
         if c.state != "running" or chip._preempt:
@@ -258,6 +260,8 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
             chip._reboot_key = tf + acc[op]
             raise
         c.bytecodes += 1
+        if wlog is not None and wlog.total != warned:
+            return None             # a runtime check warned: skipping its repeats would lose them
     return None
 
 
