@@ -222,12 +222,20 @@ def _compat(args) -> str:
     return args.compat or "spinsim"
 
 
-def _run_limit(args, clock_hz: int) -> Optional[int]:
+#: simulated seconds a Spin run stops at when no limit is given (programs that end earlier end there)
+DEFAULT_RUN_SECONDS = 10
+
+
+def _run_limit(args, clock_hz: int, interactive: bool = False) -> Optional[int]:
+    """The run's cycle limit: ``--cycles``, ``--seconds``, none with ``--forever`` or a live
+    console, else :data:`DEFAULT_RUN_SECONDS`."""
     if args.cycles is not None:
         return args.cycles
     if args.seconds is not None:
         return int(round(args.seconds * clock_hz))
-    return None
+    if getattr(args, "forever", False) or interactive:
+        return None
+    return DEFAULT_RUN_SECONDS * clock_hz
 
 
 def _summary_table(trace, end_cycle: int, extra_rows):
@@ -269,8 +277,9 @@ def cmd_run(args, out: _Out) -> int:
     from .image import ImageHeader
 
     clock = ImageHeader.parse(image).clkfreq or CLOCK_DEFAULT
-    limit = _run_limit(args, clock)
     session = ConsoleSession(args, out, clock) if console_wanted(args) else None
+    limit = _run_limit(args, clock, interactive=bool(session and session.keyboard))
+    default_limit = args.cycles is None and args.seconds is None and limit is not None
     parts = [session.console] if session else []
     t0 = time.perf_counter()
     with session or contextlib.nullcontext():
@@ -313,6 +322,11 @@ def cmd_run(args, out: _Out) -> int:
         reason = result.reason
         if session and reason == "deadlock":
             reason += ": the cogs wait on pins nothing will change (input the console does not have)"
+        elif session and reason == "stalled":
+            reason += ": the cogs poll pins and memory nothing will change (input the console does not have)"
+        elif default_limit and reason == "cycle limit":
+            reason += (f" (the default {DEFAULT_RUN_SECONDS} s: --seconds S or --cycles N to run longer, "
+                       "--forever until the program ends)")
         rows = [("ended", reason),
                 ("cogs", f"{started} started, {stopped} stopped"),
                 ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
@@ -405,7 +419,7 @@ def _run_pbasic(args, out: _Out) -> int:
         raise UsageError("the serial console (--console, --console-out, --console-in, --console-pins, --baud) "
                          "applies to Propeller programs; a BASIC Stamp program's DEBUG text is printed and "
                          "--debug-in feeds DEBUGIN")
-    if args.cycles is not None:
+    if args.cycles is not None or args.forever:
         raise UsageError("BASIC Stamp runs are limited with --seconds (the BS2 has no system counter)")
     if not os.path.exists(args.target):
         raise SpinError("no such file", path=args.target)
@@ -580,12 +594,19 @@ def build_parser() -> argparse.ArgumentParser:
     r = sub.add_parser("run", help="run a .spin, .binary, .eeprom or .bs2 program and record its pins",
                        description="Run a program on the emulated chip and record every pin change.\n"
                                    "Spin sources are compiled first. A run ends when every cog has "
-                                   "stopped or at the limit.",
+                                   "stopped, when nothing can change any more (every cog waits on pins "
+                                   "or polls in a loop nothing will wake: 'deadlock', 'stalled'), or at "
+                                   f"the limit (default: {DEFAULT_RUN_SECONDS} simulated seconds; "
+                                   "BASIC Stamp programs: 10 s).",
                        formatter_class=argparse.RawDescriptionHelpFormatter)
     r.add_argument("target", metavar="TARGET", help=".spin, .binary, .eeprom or .bs2 file")
     lim = r.add_mutually_exclusive_group()
     lim.add_argument("--cycles", type=_positive_int, metavar="N", help="stop after N clock cycles")
     lim.add_argument("--seconds", type=_positive_float, metavar="S", help="stop after S simulated seconds")
+    lim.add_argument("--forever", action="store_true",
+                     help=f"no limit: run until every cog has stopped or nothing can change any more (without "
+                          f"--seconds/--cycles a Spin run stops at {DEFAULT_RUN_SECONDS} simulated seconds, "
+                          "unless --console reads the keyboard; Ctrl-C interrupts)")
     r.add_argument("--trace", metavar="FILE", help="write the pin trace to FILE")
     r.add_argument("--trace-format", choices=["log", "vcd"],
                    help="log: '<cycle> <dir> <out>' lines; vcd: for GTKWave/PulseView (default: by extension, else log)")

@@ -240,7 +240,14 @@ class Chip(Pins, Listeners, Scheduler):
         if keep != (0, 0):
             self.note_pins(c, t_first)
 
-    def stop_cog(self, c: Cog, t: int, why: str) -> None:
+    def stop_cog(self, c: Cog, t: int, why: str, by: Optional[Cog] = None, seen: Optional[int] = None) -> None:
+        """Stop cog ``c`` at cycle ``t`` (its pins float then).
+
+        ``by`` is the cog whose instruction stops it (default ``c``) and
+        ``seen`` the cycle of that instruction's access (default ``t``): a
+        pin read by another cog at that cycle sees the stop when ``by``'s id
+        is lower, a later one always (as for a pin write, :meth:`note_pins`).
+        """
         if c.state == STOPPED:
             return
         if c.state == PARKED:
@@ -256,6 +263,8 @@ class Chip(Pins, Listeners, Scheduler):
         self.cog_events.append((t, c.id, "stop", why))
         self._seq += 1
         self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, False))
+        if self._pin_waiters and c.dira:        # the pins it drove float: cogs waiting on them may wake
+            self._wake_pin_waiters((t if seen is None else seen) + 4, c if by is None else by)
 
     def coginit(self, c: Cog, cog_id: int, code: int, par: int, tf: int) -> int:
         """COGINIT/COGNEW bytecode of Spin cog ``c``: returns the started cog's id, or -1 (as u32)."""
@@ -277,7 +286,7 @@ class Chip(Pins, Listeners, Scheduler):
         else:
             target = self.cogs[cog_id]
         if target.state != STOPPED:
-            self.stop_cog(target, done, f"restarted by cog {c.id}")
+            self.stop_cog(target, done, f"restarted by cog {c.id}", by=c, seen=done - 4)
         if self.spinsim:
             # the new cog's first slot is the COGINIT's last cycle, one step later
             # when spinsim has already stepped the target in that cycle (a lower id, or itself)
@@ -332,7 +341,7 @@ class Chip(Pins, Listeners, Scheduler):
             self.stop_cog(c, t, "COGSTOP of itself" if c.pc != 0xFFFC else "returned from its top method")
             raise CogStopped(rest)
         if target.state != STOPPED:
-            self.stop_cog(target, t, f"stopped by cog {c.id}")
+            self.stop_cog(target, t, f"stopped by cog {c.id}", by=c)
             raise Reschedule(rest)
         return rest
 

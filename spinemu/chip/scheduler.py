@@ -77,7 +77,9 @@ class Scheduler:
         while True:
             if self._cogs_changed:
                 self._cogs_changed = False
-                running = [k for k in cogs if k.state == RUNNING]
+                # a parked PASM cog (pasm_idle.py) stays listed: its key is the end of its loop's horizon
+                running = [k for k in cogs if k.state == RUNNING
+                           or (k.state == PARKED and k.engine.__class__ is not str)]
                 generic = any(k.engine.__class__ is not str for k in running)
             # the two running cogs whose next bytecodes reach the hub first (lowest id on ties)
             c = c2 = None
@@ -98,6 +100,8 @@ class Scheduler:
                     c, ck = k, key
                 elif c2 is None or key < ck2:
                     c2, ck2 = k, key
+            if ck >= _NEVER:
+                c = None                        # only parked loops with no end of their own
             ext = self._next_external(limit) if self._pin_waiters else None
             if listening:
                 now = ck if c is not None else ext
@@ -122,6 +126,8 @@ class Scheduler:
                         continue                # ... unless a pin listener sends something
                     if limit < _NEVER:
                         self.now = limit
+                        for p in list(self._parked):
+                            self._unpark(p, limit)
                         return "cycle limit"
                     return "deadlock"
                 return "all cogs stopped"
@@ -234,6 +240,9 @@ class Scheduler:
 
     def _unpark(self, c: Cog, t_limit: int) -> None:
         """Bring parked cog ``c`` to where it would be, running its loop, when bytecodes starting before ``t_limit`` are done."""
+        if c.engine.__class__ is not str:       # a parked PASM cog: its engine knows its loop
+            c.engine.idle.unpark(c, t_limit)
+            return
         busy = c.busy
         k = max(0, (t_limit - 1 - c.park_t0) // busy.period)
         c.t = c.park_t0 + k * busy.period
