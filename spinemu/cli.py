@@ -363,7 +363,11 @@ def _pasm_rows(result) -> list:
         if kind == "start" and detail.startswith("PASM"):
             rows.append((f"cog {cog_id}", f"{detail} at cycle {cycle:,}"))
     if counts:
-        rows.append(("PASM", ", ".join(f"cog {k}: {n:,} instructions" for k, n in sorted(counts.items()))))
+        text = ", ".join(f"cog {k}: {n:,} instructions" for k, n in sorted(counts.items()))
+        skipped = result.stats.get("pasm_instructions_skipped", 0)
+        if skipped:
+            text += f" ({skipped:,} of them skipped in idle loops)"
+        rows.append(("PASM", text))
     return rows
 
 

@@ -264,7 +264,8 @@ class Chip(Pins, Listeners, Scheduler):
         self._seq += 1
         self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, False))
         if self._pin_waiters and c.dira:        # the pins it drove float: cogs waiting on them may wake
-            self._wake_pin_waiters((t if seen is None else seen) + 4, c if by is None else by)
+            seen = t if seen is None else seen
+            self._wake_pin_waiters(seen + 4, c if by is None else by, seen)
 
     def coginit(self, c: Cog, cog_id: int, code: int, par: int, tf: int) -> int:
         """COGINIT/COGNEW bytecode of Spin cog ``c``: returns the started cog's id, or -1 (as u32)."""
@@ -427,6 +428,8 @@ class Chip(Pins, Listeners, Scheduler):
                  "wall_seconds": wall, "simulated_seconds": end / self.clock_hz if self.clock_hz else 0.0}
         stats["realtime_factor"] = stats["simulated_seconds"] / wall if wall > 0 else 0.0
         stats.update(self._ff_stats())
+        if self.pasm is not None:
+            stats.update(self.pasm.stats())
         stats["pll"] = [p._asdict() for p in self.counters.pll_outputs(end)]
         return RunResult(trace, bytes(self.mem[:HUB_SIZE]), end, reason, list(self.cog_events),
                          list(self.warnings), stats)

@@ -157,6 +157,13 @@ class PasmEngine:
     def __repr__(self) -> str:  # the scheduler's engine name in debugging output
         return "<PasmEngine>"
 
+    def stats(self) -> dict:
+        """The run's PASM speed-up statistics (merged into ``RunResult.stats``)."""
+        idle = self.idle
+        return {"pasm_blocks_compiled": self.compiler.count if self.compiler is not None else 0,
+                "pasm_loops_parked": idle.parked, "pasm_passes_skipped": idle.passes_skipped,
+                "pasm_instructions_skipped": idle.instructions_skipped}
+
     # ------------------------------------------------------------------ starting
     def start(self, c, code: int, par: int, t_first: int, by) -> None:
         """COGINIT of PASM: cog ``c`` loads 496 longs from hub ``code`` and runs them.
@@ -417,7 +424,7 @@ class PasmEngine:
         c.key = 0
         raise Leave(None)
 
-    def wake_time(self, c, t: int, writer) -> int:
+    def wake_time(self, c, t: int, writer, seen=None) -> int:
         """The first cycle of the instruction after a WAITPEQ/WAITPNE that the pins at ``t`` satisfy.
 
         ``t`` is when the pins changed: a cog's write (``writer``) shows at its
@@ -427,7 +434,7 @@ class PasmEngine:
         cog's 4-cycle grid.
         """
         if c.state == PARKED:                   # an idle loop that reads the pins
-            return self.idle.wake_time(c, t, writer)
+            return self.idle.wake_time(c, t, writer, seen)
         grid = c.t & 3
         base = t - 4 if writer is not None else t
         poll = base + ((grid - base) & 3)

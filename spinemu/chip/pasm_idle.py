@@ -419,12 +419,19 @@ class IdleSkipper:
             engine.until[0] = saved_until
             A.idle_at = saved_idle
 
-    def wake_time(self, c, t: int, writer) -> int:
-        """A pin it reads changed at ``t`` (``writer``: the cog whose write shows then): resume parked
-        cog ``c`` at the first pass whose INA read sees the change, and return that pass's cycle."""
+    def wake_time(self, c, t: int, writer, seen=None) -> int:
+        """A pin it reads changed at ``t``: resume parked cog ``c`` at the first pass whose INA read sees
+        the change, and return that pass's cycle.
+
+        ``writer`` is the cog whose write it was (``None``: an input or a
+        counter, seen from ``t`` on), ``seen`` the cycle of the writer's
+        access (default ``t - 4``, a PASM instruction's): a read in that very
+        cycle sees it when the writer's id is lower.
+        """
         loop = c.busy
-        if writer is not None:                  # a read in the writer's cycle sees it when the writer's id is lower
-            visible = t - 4 if writer.id < c.id else t - 3
+        if writer is not None:
+            base = t - 4 if seen is None else seen
+            visible = base if writer.id < c.id else base + 1
         else:
             visible = t
         offset = loop.ina[0]

@@ -129,7 +129,8 @@ class Scheduler:
                         for p in list(self._parked):
                             self._unpark(p, limit)
                         return "cycle limit"
-                    return "deadlock"
+                    # some cog spins in a parked loop (a PASM loop polling the pins too): stalled
+                    return "stalled" if self._parked else "deadlock"
                 return "all cogs stopped"
             t = c.t
             if ck >= limit:

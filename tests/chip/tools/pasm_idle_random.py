@@ -5,6 +5,7 @@ Usage (from the worktree root; no oracle needed)::
 
     python tests/chip/tools/pasm_idle_random.py --count 200 --seed 1     # polling programs
     python tests/chip/tools/pasm_idle_random.py --count 200 --kind random  # pasm_random.py's programs
+    python tests/chip/tools/pasm_idle_random.py --count 200 --kind loops   # ... run 30 times round
 
 The PASM cog's idle-loop skipper (spinemu/chip/pasm_idle.py) and its
 compiled blocks (spinemu/chip/pasm_blocks.py) must not change anything a
@@ -299,17 +300,33 @@ def random_program_case(seed: int, length: int = 60):
     return program(seed, length), None, "spinsim", 2_000_000
 
 
+def looped_program_case(seed: int, length: int = 40):
+    """pasm_random.py's program ``seed`` run 30 times round (hot code: compiled blocks, code that
+    ``movs``/``movd`` change again and again, ``call``/``ret`` from several places)."""
+    src = random_program_case(seed, length)[0]
+    head = "entry   mov     hp, par\n"
+    assert head in src
+    src = src.replace(head, head + "top\n", 1)
+    stop = f"        {'':<12} cogid   ha\n"
+    assert stop in src
+    src = src.replace(stop, f"        {'':<12} djnz    reps, #top\n" + stop, 1)
+    return src + "reps         long    30\n", None, "spinsim", 3_000_000
+
+
+CASES = {"polling": polling_program, "random": random_program_case, "loops": looped_program_case}
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--count", type=int, default=100)
     ap.add_argument("--seed", type=int, default=1, help="first program's seed (then seed+1, ...)")
-    ap.add_argument("--kind", choices=["polling", "random"], default="polling")
+    ap.add_argument("--kind", choices=sorted(CASES), default="polling")
     ap.add_argument("--show", action="store_true", help="print the source of programs that differ")
     a = ap.parse_args(argv)
     failed = 0
     t0 = time.time()
     for seed in range(a.seed, a.seed + a.count):
-        src, inputs, compat, cycles = polling_program(seed) if a.kind == "polling" else random_program_case(seed)
+        src, inputs, compat, cycles = CASES[a.kind](seed)
         image = compile_source(src).binary
         bad = run_both(image, inputs=inputs, compat=compat, cycles=cycles)
         if bad:
