@@ -110,8 +110,10 @@ class Scheduler:
                                  ck + 1 if c is not None else max(self.now, self._ext_seen) + 1)
                     if self._pin_waiters:       # a listener may have added input changes
                         ext = self._next_external(limit)
-            if ext is not None and (c is None or ext <= c.t):
-                self.now = self._ext_seen = ext         # an input edge or a counter edge
+            # an input edge or a counter edge first when it comes before the next cog's access
+            # (a cog runs nothing with ``until`` at or before its key: the edge must go first)
+            if ext is not None and (c is None or ext <= ck):
+                self.now = self._ext_seen = ext
                 self._wake_pin_waiters(ext)
                 continue
             if c is None:
