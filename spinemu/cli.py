@@ -2,8 +2,11 @@
 
 Each subcommand calls one library function, renders its result with rich and
 sets the exit status: 0 success, 1 bad input (a :class:`SpinError`), 2 usage
-errors.  Library errors are rendered ``file:line:col: error: ...`` with the
-source line and a caret; a Python traceback is never shown for bad input.
+errors, 70 an internal error (a bug in spinemu: any other exception, caught by
+the last-resort guard in :func:`main`).  Library errors are rendered
+``file:line:col: error: ...`` with the source line and a caret; a Python
+traceback is never shown unless asked for (``--traceback`` or
+``SPINEMU_TRACEBACK=1``).
 Nothing imports this module; it imports the rest of spinemu lazily so that
 ``spinemu --help`` starts fast.
 """
@@ -19,7 +22,10 @@ import time
 from typing import Optional, Sequence, TextIO
 
 from . import __version__
-from .cli_console import ConsoleSession, add_decode_parser, console_options, console_wanted, decode_uart_command
+from .cli_bench import RunBench, add_decode_parser, bench_options, chip_input_model, decode_command
+from .cli_console import ConsoleSession, console_options, console_wanted
+from .cli_tools import (_add_debug_parser, _add_profile_parser, _attach_profiler, _print_hints,
+                        _runtime_warning_log, _runtime_warning_rows, _warning_options)
 from .diagnostics import SpinError, UsageError
 
 __all__ = ["main", "entry_point", "build_parser"]
@@ -38,30 +44,84 @@ examples:
   spinemu run spin_src/examples/serial_echo.spin --baud 9600 --console
                                                          a serial console on P30/P31: type numbers
   spinemu trace show demo.log --pins 0..4                timeline of pins 0-4
-  spinemu trace steps demo.log --pins 1..4               stepper decoder
+  spinemu trace steps demo.log --pins 1..4               stepper decoder (coils)
+  spinemu trace steps accel.log --step-dir 0,1 --plot m.png   step/dir driver, motion plot
   spinemu trace decode uart run.log --pin 30 --baud 9600  serial text on a pin
+  spinemu run spin_src/stepper_demo.spin --bench spin_src/stepper_demo.bench.toml
+                                                         parts on the pins: the motor's steps per run
+  spinemu trace decode i2c run.log --pins 28,29          I2C transfers (addresses, data, ACK/NAK)
   spinemu disasm demo.binary                             listing of an image
-"""
+
+OBJ and DAT file names are looked up in the source's folder, the -L folders, the
+folders in SPINEMU_PATH (separated by '%s') and the Spin library folders of an
+installed Propeller Tool, PropellerIDE or SimpleIDE; a name found only in another
+letter case (a project written on Windows) is used with a warning.
+
+exit status:
+  0   success (trace compare / sidebyside: the traces agree)
+  1   an error in the input (file:line:col: error: ...), or traces that differ
+  2   a usage error (wrong or missing arguments)
+  70  an internal error: a bug in spinemu (--traceback shows where it failed)
+""" % os.pathsep
 
 
 # ----------------------------------------------------------------------------- helpers
-def _positive_int(text: str) -> int:
+def _whole_number(text: str, least: int, what: str) -> int:
+    """An argparse type: a whole number (``1_000``, ``0x10`` allowed) of at least ``least``."""
+    t = text.strip().replace("_", "")
     try:
-        v = int(text.replace("_", ""), 0)
+        if not t.isascii() or len(t) > 40:        # no other scripts' digits, no 5,000-digit numbers
+            raise ValueError
+        v = int(t, 0)
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}")
-    if v <= 0:
-        raise argparse.ArgumentTypeError(f"expected a number above 0, got {text!r}")
+    if v < least:
+        raise argparse.ArgumentTypeError(f"expected {what}, got {text!r}")
     return v
 
 
-def _positive_float(text: str) -> float:
+def _positive_int(text: str) -> int:
+    return _whole_number(text, 1, "a number above 0")
+
+
+def _count(text: str) -> int:
+    """A count or a cycle number: 0 or more."""
+    return _whole_number(text, 0, "a number, 0 or more")
+
+
+def _finite_float(text: str, least: float, strict: bool, most: float = float("inf")) -> float:
     try:
         v = float(text.replace("_", ""))
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected a number, got {text!r}")
-    if not math.isfinite(v) or v <= 0:
-        raise argparse.ArgumentTypeError(f"expected a number above 0, got {text!r}")
+    if not math.isfinite(v):
+        raise argparse.ArgumentTypeError(f"expected a finite number, got {text!r}")
+    if v < least or (strict and v == least):
+        raise argparse.ArgumentTypeError(f"expected a number {'above' if strict else 'of at least'} {least:g}, "
+                                         f"got {text!r}")
+    if v > most:
+        raise argparse.ArgumentTypeError(f"expected a number of at most {most:g}, got {text!r}")
+    return v
+
+
+#: The longest time a command line names (``--seconds``, ``--input`` times): about 32 years.
+MAX_SECONDS = 1e9
+
+
+def _positive_float(text: str) -> float:
+    """Seconds of simulated time: above 0, at most :data:`MAX_SECONDS`."""
+    return _finite_float(text, 0.0, strict=True, most=MAX_SECONDS)
+
+
+def _fraction(text: str) -> float:
+    """A relative error: finite, 0 or more."""
+    return _finite_float(text, 0.0, strict=False)
+
+
+def _width(text: str) -> int:
+    v = _positive_int(text)
+    if v > 1000:
+        raise argparse.ArgumentTypeError(f"expected at most 1000 columns, got {text!r}")
     return v
 
 
@@ -83,6 +143,9 @@ def _write_atomic(path: str, data, binary: bool) -> None:
 
 
 def _read_bytes(path: str) -> bytes:
+    if os.path.exists(path) and not os.path.isfile(path) and not os.path.isdir(path):
+        # a device or a FIFO: /dev/zero would never end, a FIFO would wait for a writer
+        raise SpinError("cannot read file: not a regular file", path=path)
     try:
         with open(path, "rb") as f:
             return f.read()
@@ -129,8 +192,7 @@ def cmd_compile(args, out: _Out) -> int:
     if _kind(args.source) != "spin":
         raise UsageError(f"'{args.source}' is not a .spin source file")
     prog = _compile(args.source, args.include, args.define)
-    for w in prog.warnings:
-        out.err_console.print(w.render() if hasattr(w, "render") else str(w), markup=False)
+    _print_hints(out, prog)
     target = args.output or os.path.splitext(args.source)[0] + ".binary"
     written = []
     if not args.eeprom or args.output:
@@ -186,56 +248,21 @@ def _progress_callback(out: _Out, total: Optional[int], clock_hz: int, enabled: 
     return progress, update
 
 
-def _parse_stimulus(spec: Optional[str], pin_count: int) -> dict:
-    """``{pin: level}`` or ``{pin: [(seconds, level), ...]}`` from ``--input``."""
-    if not spec:
-        return {}
-    from .pbasic.stimulus import parse_input_spec
-
-    try:
-        parsed = parse_input_spec(spec)
-    except ValueError:
-        raise UsageError(f"--input: cannot read {spec!r}; expected e.g. 'P3=1' or 'P5=0@0,1@0.25'")
-    bad = [p for p in parsed if not 0 <= p < pin_count]
-    if bad:
-        raise UsageError(f"--input: pin {bad[0]} does not exist (pins are 0..{pin_count - 1})")
-    return parsed
-
-
 def _spin_inputs(args, clock_hz: int):
-    """The chip's input model: the pull mode, plus any --input waveforms on top."""
-    stim = _parse_stimulus(args.stimulus, 32)
-    if not stim:
-        return args.inputs              # None: the compat mode's own default
-    from .chip.inputs import PinStimulus
-
-    pull = args.inputs or ("pullup" if _compat(args) == "spinsim" else "pulldown")
-    base = 0xFFFFFFFF if pull == "pullup" else 0
-    changes = []
-    for pin, value in stim.items():
-        for seconds, level in ([(0.0, value)] if isinstance(value, int) else value):
-            changes.append((int(round(seconds * clock_hz)), 1 << pin, level << pin))
-    return PinStimulus(changes, initial=base)
+    """The chip's input model for ``--inputs``/``--input`` (the profiler's runs; ``run`` has a bench)."""
+    return chip_input_model(args, clock_hz, _compat(args))
 
 
 def _compat(args) -> str:
     return args.compat or "spinsim"
 
 
-#: simulated seconds a Spin run stops at when no limit is given (programs that end earlier end there)
-DEFAULT_RUN_SECONDS = 10
-
-
-def _run_limit(args, clock_hz: int, interactive: bool = False) -> Optional[int]:
-    """The run's cycle limit: ``--cycles``, ``--seconds``, none with ``--forever`` or a live
-    console, else :data:`DEFAULT_RUN_SECONDS`."""
+def _run_limit(args, clock_hz: int) -> Optional[int]:
     if args.cycles is not None:
         return args.cycles
     if args.seconds is not None:
         return int(round(args.seconds * clock_hz))
-    if getattr(args, "forever", False) or interactive:
-        return None
-    return DEFAULT_RUN_SECONDS * clock_hz
+    return None
 
 
 def _summary_table(trace, end_cycle: int, extra_rows):
@@ -274,15 +301,18 @@ def cmd_run(args, out: _Out) -> int:
     if args.console_in_at is not None and not args.console_in:
         raise UsageError("--console-in-at needs --console-in FILE (the bytes to send)")
     image, source_map, prog = _load_target(args.target, args.include, args.define)
-    from .image import ImageHeader
+    _print_hints(out, prog)
+    from .image import FALLBACK_CLOCK_HZ, ImageHeader, to_eeprom
 
-    clock = ImageHeader.parse(image).clkfreq or CLOCK_DEFAULT
-    session = ConsoleSession(args, out, clock) if console_wanted(args) else None
-    limit = _run_limit(args, clock, interactive=bool(session and session.keyboard))
-    default_limit = args.cycles is None and args.seconds is None and limit is not None
-    parts = [session.console] if session else []
+    clock = ImageHeader.parse(image).clkfreq or FALLBACK_CLOCK_HZ       # the chip's time base too
+    limit = _run_limit(args, clock)
+    session = ConsoleSession(args, out, clock, live_text=not args.view) if console_wanted(args) else None
+    raw = _read_bytes(args.target) if kind == "image" else None
+    eeprom = raw if raw is not None and len(raw) == 32768 else to_eeprom(image)
+    bench = RunBench(args, out, clock_hz=clock, pin_count=32, engine="the Propeller", eeprom_image=eeprom,
+                     session=session)
     t0 = time.perf_counter()
-    with session or contextlib.nullcontext():
+    with session or contextlib.nullcontext(), bench.run_context():
         if args.engine == "python":
             if kind != "spin":
                 raise UsageError("--engine python needs a .spin source (it translates the source)")
@@ -291,29 +321,35 @@ def cmd_run(args, out: _Out) -> int:
             from .translate import run_translated
 
             result = run_translated(args.target, include_dirs=list(args.include or ()), max_cycles=limit,
-                                    compat=_compat(args), inputs=_spin_inputs(args, clock), parts=parts)
+                                    compat=_compat(args), inputs=bench.chip_inputs(_compat(args)),
+                                    parts=bench.bench if bench.active else ())
         else:
             from .chip import Chip
 
-            chip = Chip(image, compat=_compat(args), inputs=_spin_inputs(args, clock), source_map=source_map,
-                        labels=prog.dat_labels() if prog is not None else None)
-            for part in parts:
-                part.attach(chip)
+            log = _runtime_warning_log(args, out, prog)
+            chip = Chip(eeprom if raw is not None and len(raw) == 32768 else image, compat=_compat(args),
+                        inputs=bench.chip_inputs(_compat(args)), source_map=source_map,
+                        labels=prog.dat_labels() if prog is not None else None,
+                        warn=log if log is not None else False,
+                        debug_info=prog.debug_info() if prog is not None else None)
+            profiler = _attach_profiler(chip, prog) if args.profile else None
+            bench.attach(chip)
             with _pasm_trace_sink(args, out, chip, prog) as sink:
                 for cog_id in args.trace_cog or ():
                     chip.trace_cog(cog_id, sink)
-                progress, update = _progress_callback(out, limit, clock, not args.no_progress and not
-                                                      (session and session.shows))
+                progress, update = _progress_callback(out, limit, clock, not args.no_progress and not args.view
+                                                      and not (session and session.shows))
                 if progress is not None:
                     with progress:
                         result = chip.run(max_cycles=limit, progress=update)
                 else:
                     result = chip.run(max_cycles=limit)
     wall = time.perf_counter() - t0
-    _write_trace(args, result.trace)
+    _write_trace(args, bench.trace(result.trace))
+    bench.finish()
     if args.dump_hub:
         _write_atomic(args.dump_hub, bytes(result.hub), True)
-    for w in result.warnings + (session.warnings(result.end_cycle) if session else []):
+    for w in result.warnings + (session.warnings(result.end_cycle) if session else []) + bench.warnings():
         out.err_console.print(f"warning: {w}", markup=False)
     if not out.quiet:
         started = sum(1 for e in result.cog_events if e[2] == "start")
@@ -324,9 +360,6 @@ def cmd_run(args, out: _Out) -> int:
             reason += ": the cogs wait on pins nothing will change (input the console does not have)"
         elif session and reason == "stalled":
             reason += ": the cogs poll pins and memory nothing will change (input the console does not have)"
-        elif default_limit and reason == "cycle limit":
-            reason += (f" (the default {DEFAULT_RUN_SECONDS} s: --seconds S or --cycles N to run longer, "
-                       "--forever until the program ends)")
         rows = [("ended", reason),
                 ("cogs", f"{started} started, {stopped} stopped"),
                 ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
@@ -335,9 +368,13 @@ def cmd_run(args, out: _Out) -> int:
             rows.append(("trace", f"{args.trace} ({len(result.trace.changes)} changes)"))
         if session:
             rows.append(session.summary())
+        rows += bench.rows()
         if result.stats.get("pll"):
             rows.append(("PLL", _pll_summary(result.stats["pll"])))
+        rows.extend(_runtime_warning_rows(getattr(result, "runtime_warnings", [])))
         out.print(_summary_table(result.trace, result.end_cycle, rows))
+    if args.engine != "python" and args.profile:
+        out.console.print(profiler.finish(args.target).table())
     return 0
 
 
@@ -415,31 +452,38 @@ _PBASIC_REASONS = {"end": "END statement", "stop": "STOP statement", "time": "ti
 
 
 def _run_pbasic(args, out: _Out) -> int:
-    from .pbasic import run_file
+    from .pbasic import CLOCK_HZ, run_file
 
     if args.engine == "python" or args.compat is not None or args.inputs is not None:
         raise UsageError("--engine, --compat and --inputs apply to Spin programs only")
-    if console_wanted(args) or args.console_in_at is not None:
-        raise UsageError("the serial console (--console, --console-out, --console-in, --console-pins, --baud) "
-                         "applies to Propeller programs; a BASIC Stamp program's DEBUG text is printed and "
-                         "--debug-in feeds DEBUGIN")
-    if args.cycles is not None or args.forever:
+    if args.console_in_at is not None and not args.console_in:
+        raise UsageError("--console-in-at needs --console-in FILE (the bytes to send)")
+    if args.cycles is not None:
         raise UsageError("BASIC Stamp runs are limited with --seconds (the BS2 has no system counter)")
     if not os.path.exists(args.target):
         raise SpinError("no such file", path=args.target)
     seconds = args.seconds if args.seconds is not None else 10.0
+    session = None
+    if console_wanted(args):
+        if not args.console_pins:
+            raise UsageError("the serial console on a BASIC Stamp program needs --console-pins TX,RX (pins "
+                             "0..15, the SEROUT and SERIN pins; its DEBUG text is printed anyway)")
+        session = ConsoleSession(args, out, CLOCK_HZ, live_text=not args.view)
+    bench = RunBench(args, out, clock_hz=CLOCK_HZ, pin_count=16, engine="the BASIC Stamp", session=session)
     t0 = time.perf_counter()
-    inputs = _parse_stimulus(args.stimulus, 16) or None
-    result = run_file(args.target, seconds=seconds, timing=args.timing or "exact", inputs=inputs,
-                      debug_in=args.debug_in)
+    with session or contextlib.nullcontext(), bench.run_context():
+        result = run_file(args.target, seconds=seconds, timing=args.timing or "exact", inputs=bench.spec or None,
+                          debug_in=args.debug_in, parts=bench.bench if bench.active else ())
     wall = time.perf_counter() - t0
     if result.debug_output:
         out.stdout.write(result.debug_output)
         if not result.debug_output.endswith("\n"):
             out.stdout.write("\n")
-    _write_trace(args, result.trace)
+    _write_trace(args, bench.trace(result.trace))
     for w in result.warnings:
         out.err_console.print(w.render() if hasattr(w, "render") else f"warning: {w}", markup=False)
+    for w in (session.warnings(result.end_cycle) if session else []) + bench.warnings():
+        out.err_console.print(f"warning: {w}", markup=False)
     if not out.quiet:
         trace = result.trace
         end = trace.end_cycle
@@ -448,6 +492,9 @@ def _run_pbasic(args, out: _Out) -> int:
                 ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
         if args.trace:
             rows.append(("trace", f"{args.trace} ({len(trace.changes)} changes)"))
+        if session:
+            rows.append(session.summary())
+        rows += bench.rows()
         out.print(_summary_table(trace, end, rows))
     return 0
 
@@ -500,15 +547,34 @@ def _load_trace(path: str, clock_hz: int):
         raise SpinError(e.message, path=path, line=e.line, column=1, source_line=e.text)
 
 
-def _pins(spec: Optional[str]):
+def _pins(spec: Optional[str], option: str = "--pins", coils: bool = False):
+    """The pins of a ``--pins`` spec; ``coils``: exactly four different pins (a stepper's coils)."""
     if spec is None:
         return None
     from .analysis.view import parse_pins
 
     try:
-        return parse_pins(spec)
+        pins = parse_pins(spec)
     except ValueError as e:
-        raise UsageError(str(e))
+        raise UsageError(f"{option}: {e}")
+    if coils and (len(pins) != 4 or len(set(pins)) != 4):
+        raise UsageError(f"{option}: a stepper has four coil pins (four different pins in table order, "
+                         f"e.g. 1..4), got {spec!r}")
+    return pins
+
+
+def _plot_path(path: str) -> str:
+    """``path`` if matplotlib can write a plot in the format its extension names."""
+    try:
+        from .analysis.plot import plot_formats
+        formats = plot_formats()
+    except ImportError:
+        raise SpinError("trace plot needs matplotlib: pip install 'spinemu[plot]'")
+    ext = os.path.splitext(path)[1].lower().lstrip(".")
+    if ext not in formats:
+        raise UsageError(f"-o: cannot tell the image format of '{path}'; the extension must be one of "
+                         + ", ".join("." + f for f in sorted(formats)))
+    return path
 
 
 def cmd_trace(args, out: _Out) -> int:
@@ -520,6 +586,8 @@ def cmd_trace(args, out: _Out) -> int:
         result = compare_traces(ref, cand, until=args.until, slack=args.slack, tolerance=args.tolerance)
         out.stdout.write(result.render() + "\n")
         return 0 if result.passed else 1
+    if action == "plot":
+        _plot_path(args.output)
     trace = _load_trace(args.file, args.clock)
     start = args.start or 0
     end = args.end if args.end is not None else trace.end_cycle
@@ -537,20 +605,50 @@ def cmd_trace(args, out: _Out) -> int:
     if action == "plot":
         from .analysis.plot import plot_trace
 
-        plot_trace(trace, _pins(args.pins), start, end, path=args.output, title=os.path.basename(args.file))
+        fig = plot_trace(trace, _pins(args.pins), start, end, path=args.output, title=os.path.basename(args.file))
+        import matplotlib.pyplot as plt
+        plt.close(fig)
         out.print(f"{args.file} -> {args.output}")
         return 0
     if action == "steps":
-        from .analysis.stepper import decode_steps, render_steps
-
-        if not args.pins:
-            raise UsageError("trace steps needs --pins with the four coil pins, e.g. --pins 1..4")
-        steps = decode_steps(trace, _pins(args.pins))
-        out.stdout.write(render_steps(steps, trace.clock_hz, limit=args.limit) + "\n")
-        return 0
+        return _trace_steps(args, trace, start, end, out)
     if action == "decode":
-        return decode_uart_command(args, trace, out)
+        return decode_command(args, trace, out)
     raise UsageError(f"unknown trace action {action!r}")
+
+
+def _trace_steps(args, trace, start: int, end: int, out: _Out) -> int:
+    from .analysis.stepper import decode_step_dir, decode_steps, render_steps
+    from .bench.stepper_motor import motor_from_trace
+
+    if bool(args.pins) == bool(args.step_dir):
+        raise UsageError("trace steps needs either --pins with the four coil pins (e.g. --pins 1..4) "
+                         "or --step-dir with the step and dir pins (e.g. --step-dir 0,1)")
+    window = dict(start=start / trace.clock_hz, end=end / trace.clock_hz)
+    if args.pins:
+        coils = _pins(args.pins, coils=True)
+        drive = dict(coils=coils)
+        steps = decode_steps(trace, coils, **window)
+    else:
+        pins = _pins(args.step_dir)
+        if len(pins) != 2:
+            raise UsageError(f"--step-dir needs two pins, STEP,DIR (e.g. 0,1), got {args.step_dir!r}")
+        drive = dict(step=pins[0], dir=pins[1])
+        steps = decode_step_dir(trace, pins[0], pins[1], **window)
+    out.stdout.write(render_steps(steps, trace.clock_hz, limit=args.limit, max_segments=args.segments) + "\n")
+    if args.pull_in is not None or args.plot:
+        try:
+            motion = motor_from_trace(trace, pull_in=args.pull_in, **drive)
+        except ValueError as e:
+            raise UsageError(str(e))
+        out.stdout.write("\n" + motion.summary() + "\n")
+        if args.plot:
+            from .analysis.plot import plot_motion
+
+            plot_motion(motion, path=args.plot, title=os.path.basename(args.file),
+                        start=window["start"], end=window["end"])
+            out.print(f"{args.file} -> {args.plot}")
+    return 0
 
 
 def cmd_sidebyside(args, out: _Out) -> int:
@@ -559,16 +657,28 @@ def cmd_sidebyside(args, out: _Out) -> int:
     left = _load_trace(args.left, args.left_clock)
     right = _load_trace(args.right, args.right_clock)
     names = (os.path.basename(args.left), os.path.basename(args.right))
-    report = compare_stepper_traces(left, _pins(args.left_pins), right, _pins(args.right_pins),
+    report = compare_stepper_traces(left, _pins(args.left_pins, "--left-pins", coils=True), right,
+                                    _pins(args.right_pins, "--right-pins", coils=True),
                                     steps=args.steps, names=names)
     out.stdout.write(report.render() + "\n")
     return 0 if report.same_sequence else 1
 
 
 # ----------------------------------------------------------------------------- parser
+_TRACE_DESCRIPTIONS = {
+    "steps": "Decode a stepper motor's steps from a trace log: four coil pins in table order (--pins) "
+             "or a step/direction driver (--step-dir STEP,DIR). Prints the runs at one speed and the "
+             "first steps. --pull-in and --plot run the steps through the bench's stepper motor "
+             "(docs/stepper_motor.md): the steps a motor with that pull-in rate misses, and position, "
+             "speed and acceleration against time. --start/--end (cycles) limit the listed steps and the plot "
+             "to a window (the motor runs through the whole trace).",
+}
+
+
 def _obj_search_option(p) -> None:
     p.add_argument("-L", "-I", dest="include", action="append", metavar="DIR",
-                   help="add a folder to search for OBJ files (after the source's own folder)")
+                   help="add a folder to search for OBJ and DAT file names (after the source's own folder, "
+                        "before SPINEMU_PATH and the installed tools' libraries)")
 
 
 def _define_option(p) -> None:
@@ -582,6 +692,9 @@ def build_parser() -> argparse.ArgumentParser:
         description="Compile, run, trace and translate Propeller 1 Spin programs; run BASIC Stamp 2 PBASIC.",
         epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--version", action="version", version=f"spinemu {__version__}")
+    p.add_argument("--traceback", action="store_true",
+                   help="on an internal error (exit status 70), print the Python traceback "
+                        "(same as the environment variable SPINEMU_TRACEBACK=1)")
     sub = p.add_subparsers(dest="command", metavar="COMMAND")
 
     c = sub.add_parser("compile", help="compile Spin to a Propeller image (byte-identical with OpenSpin)",
@@ -600,17 +713,12 @@ def build_parser() -> argparse.ArgumentParser:
                                    "Spin sources are compiled first. A run ends when every cog has "
                                    "stopped, when nothing can change any more (every cog waits on pins "
                                    "or polls in a loop nothing will wake: 'deadlock', 'stalled'), or at "
-                                   f"the limit (default: {DEFAULT_RUN_SECONDS} simulated seconds; "
-                                   "BASIC Stamp programs: 10 s).",
+                                   "the limit (--cycles, --seconds; BASIC Stamp programs: 10 s by default).",
                        formatter_class=argparse.RawDescriptionHelpFormatter)
     r.add_argument("target", metavar="TARGET", help=".spin, .binary, .eeprom or .bs2 file")
     lim = r.add_mutually_exclusive_group()
     lim.add_argument("--cycles", type=_positive_int, metavar="N", help="stop after N clock cycles")
     lim.add_argument("--seconds", type=_positive_float, metavar="S", help="stop after S simulated seconds")
-    lim.add_argument("--forever", action="store_true",
-                     help=f"no limit: run until every cog has stopped or nothing can change any more (without "
-                          f"--seconds/--cycles a Spin run stops at {DEFAULT_RUN_SECONDS} simulated seconds, "
-                          "unless --console reads the keyboard; Ctrl-C interrupts)")
     r.add_argument("--trace", metavar="FILE", help="write the pin trace to FILE")
     r.add_argument("--trace-format", choices=["log", "vcd"],
                    help="log: '<cycle> <dir> <out>' lines; vcd: for GTKWave/PulseView (default: by extension, else log)")
@@ -625,14 +733,15 @@ def build_parser() -> argparse.ArgumentParser:
                    help="what pins nobody drives read as (default: pullup with --compat spinsim, as the "
                         "reference reads them; pulldown with --compat chip)")
     r.add_argument("--input", dest="stimulus", metavar="SPEC",
-                   help="drive input pins: 'P3=1' holds P3 high; 'P5=0@0,1@0.25' sets P5 low at 0 s and high at "
-                        "0.25 s; several pins separated by ';'")
+                   help="drive input pins (any program): 'P3=1' holds P3 high; 'P5=0@0,1@0.25' sets P5 low at 0 s "
+                        "and high at 0.25 s; several pins separated by ';'")
     r.add_argument("--debug-in", metavar="TEXT", default="", help="BASIC Stamp only: characters DEBUGIN/SERIN will read")
     r.add_argument("--engine", choices=["bytecode", "python"], default="bytecode",
                    help="bytecode: interpret the compiled image (default); python: run the Spin-to-Python translation")
     r.add_argument("--timing", choices=["exact", "realistic"],
                    help="BASIC Stamp only: exact command durations, or with per-instruction interpreter time")
     console_options(r)
+    bench_options(r)
     r.add_argument("--trace-cog", type=int, action="append", choices=range(8), metavar="N",
                    help="log every PASM instruction cog N executes: cycle, address, disassembly, flags after it "
                         "and the value written (repeatable; bytecode engine only)")
@@ -640,6 +749,10 @@ def build_parser() -> argparse.ArgumentParser:
                    help="where --trace-cog writes its log (default: standard output)")
     r.add_argument("--no-progress", action="store_true", help="no progress bar")
     r.add_argument("-q", "--quiet", action="store_true", help="no summary")
+    _warning_options(r)
+    r.add_argument("--profile", action="store_true",
+                   help="also profile the run: cycles per Spin line and method per cog (slower; see "
+                        "'spinemu profile' for JSON, CSV and an annotated listing)")
     r.set_defaults(func=cmd_run)
 
     d = sub.add_parser("disasm", help="list an image: header, objects, bytecode, PASM",
@@ -669,24 +782,35 @@ def build_parser() -> argparse.ArgumentParser:
     tc.add_argument("reference")
     tc.add_argument("candidate")
     tc.add_argument("--until", type=_positive_int, metavar="CYCLE", help="ignore changes after this cycle")
-    tc.add_argument("--tolerance", type=float, default=0.005, help="worst timing error to pass (default 0.005)")
-    tc.add_argument("--slack", type=int, default=16_000, help="cycles of fixed offset forgiven (default 16000)")
+    tc.add_argument("--tolerance", type=_fraction, default=0.005, help="worst timing error to pass (default 0.005)")
+    tc.add_argument("--slack", type=_count, default=16_000, help="cycles of fixed offset forgiven (default 16000)")
     for name, help_ in (("show", "timeline of the pins in the terminal"), ("plot", "waveform plot to an image file"),
-                        ("convert", "convert a log to VCD"), ("steps", "decode stepper coil patterns into steps")):
-        a = ts.add_parser(name, help=help_, parents=[clock])
+                        ("convert", "convert a log to VCD"),
+                        ("steps", "decode stepper coil patterns or step/dir pulses into steps")):
+        a = ts.add_parser(name, help=help_, parents=[clock], description=_TRACE_DESCRIPTIONS.get(name, help_))
         a.add_argument("file")
         if name in ("plot", "convert"):
             a.add_argument("-o", "--output", required=True, metavar="FILE")
         if name != "convert":
             a.add_argument("--pins", metavar="SPEC", help="pins, e.g. 0..4 or 4..7,0" +
                            (" (the coils, in table order)" if name == "steps" else ""))
-        a.add_argument("--start", type=int, metavar="CYCLE")
-        a.add_argument("--end", type=int, metavar="CYCLE")
+        a.add_argument("--start", type=_count, metavar="CYCLE")
+        a.add_argument("--end", type=_count, metavar="CYCLE")
         if name == "show":
-            a.add_argument("--width", type=_positive_int, default=64, help="columns of the timeline")
-            a.add_argument("--changes", type=int, default=0, metavar="N", help="also list the first N changes")
+            a.add_argument("--width", type=_width, default=64, help="columns of the timeline (1..1000)")
+            a.add_argument("--changes", type=_count, default=0, metavar="N", help="also list the first N changes")
         if name == "steps":
-            a.add_argument("--limit", type=int, default=20, metavar="N", help="show the first N steps")
+            a.add_argument("--step-dir", metavar="STEP,DIR",
+                           help="decode a step/direction driver instead: its step and dir pins, e.g. 0,1 "
+                                "(a step per high pulse of at least 1 us, forward while DIR is high)")
+            a.add_argument("--limit", type=_count, default=20, metavar="N", help="show the first N steps")
+            a.add_argument("--segments", type=_count, default=40, metavar="N",
+                           help="show the first N segments (runs at one speed; default 40)")
+            a.add_argument("--pull-in", type=_positive_float, metavar="RATE",
+                           help="run the steps through the motor model with this pull-in rate (steps/s) "
+                                "and report the steps it misses")
+            a.add_argument("--plot", metavar="FILE",
+                           help="plot position, speed and acceleration against time (PNG, SVG or PDF)")
     add_decode_parser(ts, [clock])
     tr.set_defaults(func=cmd_trace)
 
@@ -701,18 +825,17 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--right-clock", type=_positive_int, default=CLOCK_DEFAULT)
     s.add_argument("--steps", type=_positive_int, metavar="N", help="compare only the first N steps")
     s.set_defaults(func=cmd_sidebyside)
+    _add_debug_parser(sub)
+    _add_profile_parser(sub)
     return p
 
 
 # ----------------------------------------------------------------------------- entry
-def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
-         stderr: Optional[TextIO] = None) -> int:
-    """Run the command line ``argv`` and return the exit status.
+def _run_command(argv: Optional[Sequence[str]], stdout: TextIO, stderr: TextIO, state: dict) -> int:
+    """Parse ``argv`` and run its command; expected errors become statuses 1 and 2.
 
-    Tests call this in-process with their own streams.
+    ``state`` receives the command's name as soon as it is known (for the guard's message).
     """
-    stdout = stdout or sys.stdout
-    stderr = stderr or sys.stderr
     parser = build_parser()
     try:
         old = sys.stdout, sys.stderr
@@ -723,6 +846,9 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
             sys.stdout, sys.stderr = old
     except SystemExit as e:
         return int(e.code or 0)
+    state["command"] = getattr(args, "command", None)
+    if getattr(args, "trace_action", None):
+        state["command"] += " " + args.trace_action
     if not getattr(args, "command", None):
         parser.print_help(stdout)
         return 2
@@ -736,7 +862,7 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
         stderr.write(f"spinemu {args.command}: {e.message}\n")
         return 2
     except SpinError as e:
-        stderr.write(_render_error(e) + "\n")
+        stderr.write(_render_error(e, getattr(args, "target", None)) + "\n")
         return e.exit_status
     except OSError as e:
         stderr.write(f"{getattr(e, 'filename', None) or 'spinemu'}: error: {e.strerror or e}\n")
@@ -746,20 +872,83 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
         return 130
 
 
-def _render_error(err: SpinError) -> str:
-    """The error's diagnostics, with paths under the working directory shown relative to it."""
+def _render_error(err: SpinError, target: Optional[str] = None) -> str:
+    """The error's diagnostics, with paths under the working directory shown relative to it.
+
+    An image or run-time error that names no file (an image has no source lines) is about
+    the command's ``target``.
+    """
     from dataclasses import replace
 
-    cwd = os.getcwd()
+    from .diagnostics import EmulationError, ImageError
 
-    def short(path):
-        if path and os.path.isabs(path):
-            rel = os.path.relpath(path, cwd)
-            if not rel.startswith(".."):
-                return rel
-        return path
+    if target and isinstance(err, (ImageError, EmulationError)):
+        err.diagnostics = [replace(d, path=d.path or target) for d in err.diagnostics]
+    return "\n".join(_render_error_diagnostic(d) for d in err.diagnostics)
 
-    return "\n".join(replace(d, path=short(d.path)).render() for d in err.diagnostics)
+
+def _short_path(path):
+    """``path`` relative to the working directory when it lies under it."""
+    if path and os.path.isabs(path):
+        rel = os.path.relpath(path, os.getcwd())
+        if not rel.startswith(".."):
+            return rel
+    return path
+
+
+def _render_error_diagnostic(d) -> str:
+    from dataclasses import replace
+
+    return replace(d, path=_short_path(d.path)).render()
+
+
+# ----------------------------------------------------------------------------- last-resort guard
+#: Exit status of an internal error (BSD sysexits EX_SOFTWARE): never a status bad input gives.
+EXIT_INTERNAL = 70
+TRACEBACK_ENV = "SPINEMU_TRACEBACK"
+_REPORT_HINT = ("this is a bug in spinemu, not in your input; please report it with the command line and "
+                "the input files")
+
+
+def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
+         stderr: Optional[TextIO] = None) -> int:
+    """Run the command line ``argv`` and return the exit status.
+
+    0: success; 1: an error in the input (rendered ``file:line:col: error: ...``);
+    2: a usage error; 70: an internal error.  Any exception other than the
+    expected ones is a bug: it is reported as ``spinemu COMMAND: internal error:
+    ...`` with a hint to report it, the traceback only with ``--traceback`` (before
+    the command) or the environment variable ``SPINEMU_TRACEBACK=1``.
+    Tests call this in-process with their own streams.
+    """
+    stdout = stdout or sys.stdout
+    stderr = stderr or sys.stderr
+    argv = list(sys.argv[1:] if argv is None else argv)
+    state: dict = {"command": None}
+    try:
+        return _run_command(argv, stdout, stderr, state)
+    except Exception as e:  # noqa: BLE001 - the last resort: nothing else may escape as a traceback
+        return _internal_error(e, argv, state.get("command"), stderr)
+
+
+def _internal_error(err: BaseException, argv: Sequence[str], command: Optional[str], stderr: TextIO) -> int:
+    """Report an unexpected exception (a bug) and return :data:`EXIT_INTERNAL`."""
+    import traceback
+
+    what = f"spinemu {command}" if command else "spinemu"
+    cls = type(err)
+    name = cls.__qualname__ if cls.__module__ == "builtins" else f"{cls.__module__}.{cls.__qualname__}"
+    detail = f"{name}: {err}" if str(err) else name
+    show = "--traceback" in argv or os.environ.get(TRACEBACK_ENV, "") not in ("", "0")
+    try:
+        if show:
+            stderr.write("".join(traceback.format_exception(type(err), err, err.__traceback__)))
+        stderr.write(f"{what}: internal error: {detail}\n{what}: {_REPORT_HINT}"
+                     + ("" if show else f" (run with --traceback or {TRACEBACK_ENV}=1 to see where it failed)")
+                     + "\n")
+    except Exception:  # noqa: BLE001 - a broken stderr must not hide the status
+        pass
+    return EXIT_INTERNAL
 
 
 def entry_point() -> None:

@@ -1,4 +1,5 @@
-"""The serial console's part of the command line: its ``run`` options, the run's console, ``trace decode uart``.
+"""The serial console's part of the command line: its ``run`` options, the run's console, ``trace decode uart``
+(whose parser, with the other protocols', is in :mod:`spinemu.cli_bench`).
 
 Only :mod:`spinemu.cli` imports this module (it keeps the console's
 argument parsing and rendering out of the main command module); the library
@@ -12,8 +13,7 @@ import math
 
 from .diagnostics import SpinError, UsageError
 
-__all__ = ["console_options", "console_wanted", "ConsoleSession", "add_decode_parser", "decode_uart_command",
-           "baud_rate"]
+__all__ = ["console_options", "console_wanted", "ConsoleSession", "decode_uart_frames", "baud_rate"]
 
 
 def baud_rate(text: str) -> float:
@@ -69,7 +69,7 @@ def console_wanted(args) -> bool:
 class ConsoleSession:
     """The serial console of a Spin run (``--console*``, ``--baud``): set up, live output, summary."""
 
-    def __init__(self, args, out, clock_hz: int):
+    def __init__(self, args, out, clock_hz: int, live_text: bool = True):
         from .bench import SerialConsole, UartFormat
         from .bench.live import ConsoleLink, stdin_keyboard
 
@@ -91,7 +91,7 @@ class ConsoleSession:
             raw = self._stack.enter_context(open(self.out_path, "wb"))
         if self.keyboard is not None:
             self._stack.enter_context(self.keyboard)
-        self.shows = not out.quiet
+        self.shows = not out.quiet and live_text
         self.link = ConsoleLink(self.console, text_out=out.stdout if self.shows else None, raw_out=raw,
                                 keyboard=self.keyboard)
         self.out = out
@@ -150,32 +150,18 @@ def console_options(p) -> None:
     g.add_argument("--baud", type=baud_rate, metavar="N", help="bits per second (default 115200)")
 
 
-def add_decode_parser(ts, parents) -> None:
-    """``spinemu trace decode``: its subparser under the trace actions ``ts``."""
-    dc = ts.add_parser("decode", help="decode a protocol on the pins (uart: asynchronous serial)", parents=parents,
-                       description="Decode asynchronous serial (8N1) on one pin of a trace log: the text "
-                                   "(CR, CR LF and LF as new lines) or, with --frames, one line per byte. An "
-                                   "undriven pin reads as the idle level.")
-    dc.add_argument("protocol", choices=["uart"], help="uart: asynchronous serial, 8 data bits, no parity")
-    dc.add_argument("file")
-    dc.add_argument("--pin", type=int, required=True, metavar="N", help="the pin carrying the serial data")
-    dc.add_argument("--baud", type=baud_rate, default=115_200.0, metavar="B",
-                    help="bits per second (default 115200)")
-    dc.add_argument("--inverted", action="store_true", help="the line idles low and the start bit is high")
-    dc.add_argument("--hold-last", action="store_true",
-                    help="the line keeps its last level after the trace ends (completes a frame cut by the "
-                         "end, e.g. when the program stopped during its last stop bit)")
-    dc.add_argument("--frames", action="store_true", help="one line per byte: cycle, time, value, character")
-    dc.add_argument("--start", type=int, metavar="CYCLE", help="only frames starting at or after this cycle")
-    dc.add_argument("--end", type=int, metavar="CYCLE", help="only frames starting at or before this cycle")
+def decode_uart_frames(args, trace, out) -> list:
+    """``trace decode uart``: print the bytes on one pin of a trace, as text or one line per frame.
 
-
-def decode_uart_command(args, trace, out) -> int:
-    """``trace decode uart``: the bytes on one pin of a trace, as text or one line per frame."""
+    Returns:
+        ``(start, end, text)`` of each frame (for an annotation file).
+    """
     from .analysis.view import format_time
     from .bench.terminal import stream_text
     from .bench.uart import UartFormat, decode_uart, frame_cut_at_end
 
+    if args.pin is None:
+        raise UsageError("trace decode uart needs --pin N (the pin carrying the serial data)")
     if not 0 <= args.pin < trace.pin_count:
         raise UsageError(f"--pin {args.pin} does not exist (pins are 0..{trace.pin_count - 1})")
     fmt = UartFormat(args.baud, inverted=args.inverted)
@@ -203,4 +189,5 @@ def decode_uart_command(args, trace, out) -> int:
     if not args.hold_last and frame_cut_at_end(trace, args.pin, fmt):
         out.err_console.print("warning: a frame was still being received when the trace ended (--hold-last "
                               "completes it with the line's last level)", markup=False)
-    return 0
+    return [(f.start, f.end, f"${f.value:02X} {chr(f.value) if 32 <= f.value < 127 else '.'}"
+             + (f" {f.error} error" if f.error else "")) for f in frames]

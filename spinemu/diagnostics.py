@@ -13,6 +13,8 @@ This module is a shared leaf: it imports nothing from the project.
 """
 from __future__ import annotations
 
+import re
+import unicodedata
 from dataclasses import dataclass, field
 from typing import Iterable, Optional
 
@@ -26,6 +28,7 @@ __all__ = [
     "UsageError",
     "DiagnosticBag",
     "source_line_at",
+    "split_lines",
 ]
 
 
@@ -68,16 +71,51 @@ class Diagnostic:
         return ":".join(parts)
 
     def render(self) -> str:
-        """The message, the source line and a caret under the column."""
+        """The message, the source line and a caret under the column.
+
+        A line longer than :data:`SHOWN_CHARS` is shown as the stretch around the
+        column, with ``...`` where it was cut.
+        """
         out = [f"{self.location()}: {self.severity}: {self.message}"]
         if self.source_line is not None and self.column is not None:
-            text = self.source_line.rstrip("\r\n")
+            text, column = _window(self.source_line.rstrip("\r\n"), self.column)
             out.append(text)
             # Keep tabs so the caret lines up however the terminal expands them.
-            prefix = "".join("\t" if ch == "\t" else " " for ch in text[: self.column - 1])
-            width = max(1, min(self.length, max(1, len(text) - self.column + 1)))
+            prefix = "".join("\t" if ch == "\t" else " " for ch in text[: column - 1])
+            width = max(1, min(self.length, max(1, len(text) - column + 1)))
             out.append(prefix + "^" + "~" * (width - 1))
         return "\n".join(out)
+
+
+#: Characters of a long source line a diagnostic shows around its column.
+SHOWN_CHARS = 160
+
+
+def _window(line: str, column: int) -> tuple:
+    """``(text to show, column in it)``: the line, or the stretch of a long one around ``column``.
+
+    >>> _window("x" * 500, 300)[0][:5], _window("x" * 500, 300)[1]
+    ('...xx', 84)
+    """
+    if len(line) <= SHOWN_CHARS:
+        return _visible(line), column
+    start = max(0, min(column - 1 - SHOWN_CHARS // 2, len(line) - SHOWN_CHARS))
+    lead = "..." if start else ""
+    tail = "..." if start + SHOWN_CHARS < len(line) else ""
+    return lead + _visible(line[start:start + SHOWN_CHARS]) + tail, column - start + len(lead)
+
+
+def _visible(text: str) -> str:
+    """``text`` with control characters (but tabs), line separators and lone surrogates shown as
+    U+FFFD, one for one (the caret stays in its column; an ESC cannot reach the terminal).
+
+    >>> _visible("a\\x1b[2Jb\\tc") == "a\\ufffd[2Jb\\tc"
+    True
+    """
+    if text.isprintable():
+        return text
+    return "".join("\ufffd" if ch != "\t" and unicodedata.category(ch) in ("Cc", "Cs", "Zl", "Zp") else ch
+                   for ch in text)
 
 
 class SpinError(Exception):
@@ -203,13 +241,30 @@ class DiagnosticBag:
             raise cls(diagnostics=errors)
 
 
+_LINE_BREAK = re.compile(r"\r\n|\r|\n")
+
+
+def split_lines(text: str) -> list:
+    """``text``'s lines as the Spin and PBASIC lexers count them: only CR LF, CR and LF
+    end a line (``str.splitlines`` also splits at form feeds, U+2028 and other
+    separators, and a caret would then point into the wrong line).
+
+    >>> split_lines("a\\x0cb\\r\\nc\\rd\\n")
+    ['a\\x0cb', 'c', 'd']
+    """
+    lines = _LINE_BREAK.split(text)
+    if lines and lines[-1] == "":
+        lines.pop()
+    return lines
+
+
 def source_line_at(text: str, line: int) -> Optional[str]:
     """The 1-based ``line`` of ``text`` without its line ending, or ``None``.
 
     >>> source_line_at("a\\nbc\\n", 2)
     'bc'
     """
-    lines = text.splitlines()
+    lines = split_lines(text)
     if 1 <= line <= len(lines):
         return lines[line - 1]
     return None

@@ -38,13 +38,16 @@ from dataclasses import dataclass
 from .diagnostics import ImageError
 
 __all__ = [
-    "HUB_SIZE", "HEADER_SIZE", "BOOT_FRAME", "ImageHeader", "ObjectTable",
+    "HUB_SIZE", "HEADER_SIZE", "FALLBACK_CLOCK_HZ", "BOOT_FRAME", "ImageHeader", "ObjectTable",
     "image_checksum", "to_eeprom", "from_eeprom", "load_image", "describe_clkmode",
     "CLKMODE_NAMES",
 ]
 
 HUB_SIZE = 0x8000
 HEADER_SIZE = 16
+#: Cycles per second for times (trace, ``--seconds``) when an image's header says 0 Hz, as
+#: OpenSpin writes for ``_xinfreq = 0`` or ``_clkfreq = 0``: RCFAST's nominal 12 MHz.
+FALLBACK_CLOCK_HZ = 12_000_000
 BOOT_FRAME = 0xFFF9FFFF  # written twice at dbase-8 by the boot loader
 _BOOT_FRAME_SUM = 2 * sum(BOOT_FRAME.to_bytes(4, "little"))
 

@@ -13,6 +13,14 @@ EMPTY_FILE = "the file is empty"
 BAD_ENCODING = "the file is not valid UTF-16: {detail}"
 OBJECT_NOT_FOUND = "cannot find object file '{name}' (looked in {where})"
 DAT_FILE_NOT_FOUND = "cannot find data file '{name}' (looked in {where})"
+STANDARD_OBJECT_HINT = ("'{name}' is an object of the Propeller Tool's library (also shipped with PropellerIDE "
+                        "and SimpleIDE): put that library's folder in the {var} environment variable or give "
+                        "it with -L DIR")
+AMBIGUOUS_FILE = ("'{name}' matches several files that differ only in letter case in {folder}: {candidates}; "
+                  "spell the name exactly")
+NAME_IN_OTHER_CASE = "'{name}' is spelled '{actual}' on disk ({folder}); using it, as the Propeller Tool on Windows would"
+
+DAT_FILE_TOO_BIG = "data file '{name}' is larger than the {size}-byte hub RAM"
 OBJECT_RECURSION = "object '{name}' includes itself"
 
 # ----------------------------------------------------------------------------- lexer
@@ -21,7 +29,7 @@ UNTERMINATED_DOC = "the '{{{{' comment opened on line {line} is never closed wit
 STRAY_CLOSE_BRACE = "'}' without a '{' to open a comment"
 UNTERMINATED_STRING = "this string has no closing '\"'"
 BAD_NUMBER = "'{text}' is not a valid number"
-BAD_CHARACTER = "unexpected character '{ch}'"
+BAD_CHARACTER = "unexpected character {ch}"
 DESIGNATOR_NOT_FIRST = "'{word}' starts a section and must be in the first column"
 HERE_OUTSIDE_DAT = "'$' (the current address) can only be used in a DAT section"
 LOCAL_LABEL_OUTSIDE_DAT = "':{name}' is a DAT local label; Spin code cannot use it"
@@ -89,10 +97,15 @@ NO_METHODS_OR_DAT = "this object has no methods"
 
 # ----------------------------------------------------------------------------- constants
 NEEDS_CONSTANT = "this must be a constant expression"
+CONSTANT_GROUP = ("{what} is not a constant: in a method, '{word}(' starts a constant expression that takes "
+                  "the rest of the expression (as in OpenSpin); put the {word}(...) in parentheses")
+CONSTANT_TOO_LATE = ("'{name}' is not known yet here: it is defined further down from constants defined "
+                     "further down still (constants are read in two passes); move its definition up")
 INTEGER_AND_FLOAT = "cannot mix integer and floating-point values here"
 FLOAT_NOT_ALLOWED = "a floating-point value is not allowed here"
 DIVIDE_BY_ZERO = "division by zero in a constant expression"
 CONSTANT_TOO_BIG = "{value} does not fit in 32 bits"
+OVERRIDE_TOO_SMALL = "a '{size}' override in a '{line}' line: a size override may only make items larger"
 BAD_COUNT = "the count must be between {low} and {high}, not {value}"
 ENUM_NOT_STARTED = "an enumeration needs a '#' start value first"
 BAD_CLOCK = "invalid clock setting: {reason}"
@@ -111,7 +124,13 @@ STRING_NOT_ALLOWED = "string() is not allowed here (this expression is compiled 
 OTHER_NOT_LAST = "'other' must be the last case"
 LOOKUP_EMPTY = "lookup needs at least one value"
 CASE_WITHOUT_MATCH = "case needs at least one match line"
+TOO_MANY_NESTED_BLOCKS = ("blocks nested too deeply: Spin allows {limit} levels of if, repeat, case and "
+                          "lookup/lookdown (OpenSpin: 'Limit of 8 nested blocks exceeded')")
+EXPRESSION_TOO_DEEP = ("expression nested too deeply: spinemu compiles up to {limit} levels (parentheses, "
+                       "operators); split it into several statements or constants")
 TOO_MANY_PARAMS = "a method can have at most 255 parameters and locals"
+LOCALS_TOO_BIG = ("the result, parameters and locals take more than 32 KB "
+                  "(OpenSpin: 'Limit of 4096 local variables exceeded')")
 FILE_TOO_BIG = "the program, its variables and its stack exceed the 32 KB hub RAM by {longs} longs"
 STACK_FREE_TOO_BIG = "_stack and _free must add up to less than 8192 longs"
 TOO_MUCH_VAR = "too much VAR space (more than 32 KB)"
@@ -132,3 +151,11 @@ PASM_RANGE = "operand value ${value:X} is out of range (0..$1FF)"
 PASM_UNAVAILABLE = "PASM instructions are not supported yet"
 DATA_SIZE_OVERRIDE = "a size override cannot be larger than the data size"
 RES_AFTER_DATA = "res cannot be followed by data or instructions in the same org"
+
+# ----------------------------------------------------------------------------- hints (change no byte)
+HINT_ASSIGNING_COMPARE = ("'{op}' assigns in Spin: '{target} {op} ...' sets {target} to ({target} {cmp} ...) and gives "
+                          "that; to compare '{what}' write '{right}'")
+HINT_ROTATE_NOT_MINUS = ("'{left}<-{right}' rotates {left} left by {right} ('<-' is rotate-left); to compare with "
+                         "a negative number write '{left} < -{right}'")
+HINT_SHADOWED_OBJECT = ("'{name}' is taken from {used}; {other} is also there and differs (the folder "
+                        "listed first wins)")

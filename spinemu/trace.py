@@ -82,6 +82,10 @@ class PinTrace:
     pin_count: int = 32
     pin_names: dict = field(default_factory=dict)
 
+    def __post_init__(self):
+        if not self.clock_hz > 0:       # every time in seconds divides by it
+            raise ValueError(f"a trace's clock must be above 0 Hz, not {self.clock_hz!r}")
+
     # ------------------------------------------------------------------ access
     def record(self, cycle: int, dir_mask: int, out_mask: int) -> None:
         """Append a state if it differs from the last one."""

@@ -126,7 +126,10 @@ class ObjectListing:
 
     @property
     def dat_end(self) -> int:
-        return min([m.start for m in self.methods], default=self.base + self.table.size)
+        """Where the first method starts; a method table entry outside the object (a corrupt
+        image) does not count: the DAT range never runs past the object, so never past the image."""
+        obj_end = self.base + self.table.size
+        return min([m.start for m in self.methods if self.table_end <= m.start <= obj_end], default=obj_end)
 
 
 @dataclass

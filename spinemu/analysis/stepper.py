@@ -30,14 +30,12 @@ import statistics
 from dataclasses import dataclass, field
 from typing import Optional, Sequence
 
+from ..bench.stepper_motor import PHASE, StepperMotor, coil_delta
 from ..trace import PinTrace
 
 __all__ = ["PHASE", "Step", "Segment", "StepSequence", "StepComparison", "decode_steps",
-           "compare_step_sequences", "compare_stepper_traces", "parse_pins", "pattern_text",
-           "render_steps"]
-
-#: Position of each coil pattern on the 8-step half-step cycle.
-PHASE = {0b0001: 0, 0b0011: 1, 0b0010: 2, 0b0110: 3, 0b0100: 4, 0b1100: 5, 0b1000: 6, 0b1001: 7}
+           "decode_step_dir", "compare_step_sequences", "compare_stepper_traces", "parse_pins",
+           "pattern_text", "render_steps"]
 _TWO_COIL = {0b0011, 0b0110, 0b1100, 0b1001}
 _ONE_COIL = {0b0001, 0b0010, 0b0100, 0b1000}
 
@@ -69,8 +67,10 @@ class Step:
         time: the same in seconds.
         pattern: the new pattern.
         previous: the pattern before (None: coils were not all driven).
-        delta: half-steps moved (+2 = one forward full step), None if not a step.
+        delta: half-steps moved (+2 = one forward full step), None if not a step;
+            a step/dir pulse moves +2 or -2 (one step of the driver).
         interval: seconds since the previous step (None for the first).
+        label: how to show ``pattern`` (step/dir: ``"DIR=1"``); None: the coil pattern's bits.
     """
 
     index: int
@@ -80,6 +80,7 @@ class Step:
     previous: Optional[int]
     delta: Optional[int]
     interval: Optional[float]
+    label: Optional[str] = None
 
     @property
     def direction(self) -> Optional[int]:
@@ -89,7 +90,7 @@ class Step:
 
     @property
     def text(self) -> str:
-        return pattern_text(self.pattern)
+        return self.label if self.label is not None else pattern_text(self.pattern)
 
 
 @dataclass(frozen=True)
@@ -131,13 +132,15 @@ class Segment:
 
 @dataclass
 class StepSequence:
-    """The steps found on four coil pins of one trace."""
+    """The steps found on four coil pins (``kind="coils"``) or a step/dir pin pair
+    (``kind="step/dir"``, ``pins = (step, dir)``) of one trace."""
 
     pins: tuple
     clock_hz: int
     steps: list = field(default_factory=list)
     initial: Optional[int] = None
     tolerance: float = 0.1
+    kind: str = "coils"
 
     def __len__(self) -> int:
         return len(self.steps)
@@ -149,10 +152,12 @@ class StepSequence:
     @property
     def mode(self) -> str:
         """``"full-step (two-coil)"``, ``"wave"``, ``"half-step"``, ``"irregular"`` or ``"none"``."""
-        used = {s.pattern for s in self.steps}
+        used = {s.pattern for s in self.steps if s.pattern or self.kind != "coils"}   # 0000: coils off
         deltas = {abs(s.delta) for s in self.steps if s.delta is not None}
         if not used:
             return "none"
+        if self.kind == "step/dir":
+            return "step/dir"
         if used <= _TWO_COIL and deltas <= {2}:
             return "full-step (two-coil)"
         if used <= _ONE_COIL and deltas <= {2}:
@@ -212,11 +217,20 @@ class StepSequence:
                 first, base, periods = i + 1, None, []
         return segs
 
-    def summary(self, name: str = "trace") -> str:
-        pins = ",".join(f"P{p}" for p in self.pins)
-        lines = [f"{name}: {len(self.steps)} steps on {pins} ({self.mode}), "
-                 f"net {self.net_half_steps / 2:+g} full steps"]
-        lines += ["  " + seg.describe() for seg in self.segments()]
+    def summary(self, name: str = "trace", max_segments: Optional[int] = None) -> str:
+        """Steps, net movement and the segments (the first ``max_segments`` of them)."""
+        if self.kind == "step/dir":
+            pins = f"P{self.pins[0]} (step), P{self.pins[1]} (dir)"
+            net = f"net {self.net_half_steps // 2:+d} steps"
+        else:
+            pins = ",".join(f"P{p}" for p in self.pins)
+            net = f"net {self.net_half_steps / 2:+g} full steps"
+        lines = [f"{name}: {len(self.steps)} steps on {pins} ({self.mode}), {net}"]
+        segs = self.segments()
+        shown = segs if max_segments is None else segs[:max_segments]
+        lines += ["  " + seg.describe() for seg in shown]
+        if len(shown) < len(segs):
+            lines.append(f"  ... {len(segs) - len(shown)} more segments")
         return "\n".join(lines)
 
 
@@ -284,15 +298,46 @@ def decode_steps(trace: PinTrace, pins: Sequence[int], *, min_dwell: float = 0.0
             prev = p
             continue
         t = c / hz
-        delta = None
-        if prev in PHASE and p in PHASE:
-            dd = (PHASE[p] - PHASE[prev]) % 8
-            delta = dd - 8 if dd > 4 else (None if dd == 4 else dd)
+        delta = coil_delta(prev, p)
         if not seq.steps:
             seq.initial = prev
         seq.steps.append(Step(len(seq.steps), c, t, p, prev, delta,
                               None if prev_t is None else t - prev_t))
         prev, prev_t = p, t
+    return seq
+
+
+def decode_step_dir(trace: PinTrace, step_pin: int, dir_pin: int, *, start: float = 0.0,
+                    end: Optional[float] = None, tolerance: float = 0.1,
+                    min_pulse: float = 1e-6) -> StepSequence:
+    """Find the steps of a step/direction driver in a trace.
+
+    A step is a high pulse on ``step_pin`` at least ``min_pulse`` seconds wide,
+    forward when ``dir_pin`` is high at its rising edge; the pulses are found by
+    the bench's motor model (:class:`~spinemu.bench.stepper_motor.StepperMotor`).
+    Each step is recorded with ``delta`` +2 or -2 (one step) and ``pattern`` the
+    DIR level, so :meth:`StepSequence.segments` and :func:`render_steps` work as
+    for coils.
+
+    Args:
+        trace: a pin trace (any clock).
+        step_pin, dir_pin: the driver's STEP and DIR inputs.
+        start, end: only steps in this time window (seconds).
+        tolerance: relative change of step interval that starts a new segment.
+        min_pulse: narrower STEP pulses are not steps.
+    """
+    motion = StepperMotor(step=step_pin, dir=dir_pin, clock_hz=trace.clock_hz,
+                          min_pulse=min_pulse, dir_setup=0.0).feed(trace.changes, trace.end_cycle)
+    seq = StepSequence((step_pin, dir_pin), trace.clock_hz, tolerance=tolerance, kind="step/dir")
+    prev_t: Optional[float] = None
+    prev_dir: Optional[int] = None
+    for m in motion.steps:
+        if m.time < start or (end is not None and m.time > end):
+            continue
+        level = 1 if m.delta > 0 else 0
+        seq.steps.append(Step(len(seq.steps), m.cycle, m.time, level, prev_dir, 2 if m.delta > 0 else -2,
+                              None if prev_t is None else m.time - prev_t, label=f"DIR={level}"))
+        prev_t, prev_dir = m.time, level
     return seq
 
 
@@ -419,13 +464,14 @@ def compare_step_sequences(a, b, c=None, d=None, *, steps: Optional[int] = None,
     return StepComparison(a, b, tuple(names), n, first, agree)
 
 
-def render_steps(seq: StepSequence, clock_hz: Optional[int] = None, limit: int = 20) -> str:
-    """A step table (the first ``limit`` steps) and the segment summary, as text.
+def render_steps(seq: StepSequence, clock_hz: Optional[int] = None, limit: int = 20,
+                 max_segments: Optional[int] = None) -> str:
+    """The segment summary (the first ``max_segments``) and a step table (the first ``limit`` steps), as text.
 
     ``clock_hz`` is accepted for symmetry with other renderers; the cycles
     shown are those of the decoded trace.
     """
-    lines = [seq.summary("steps"), "", " step       cycle        time  pattern  move   interval"]
+    lines = [seq.summary("steps", max_segments), "", " step       cycle        time  pattern  move   interval"]
     for s in seq.steps[:limit]:
         move = {None: "   ?", 2: "  +1", -2: "  -1", 1: "+1/2", -1: "-1/2", 0: "   0"}.get(s.delta, "   ?")
         iv = f"{s.interval * 1e3:8.3f} ms" if s.interval is not None else "          -"

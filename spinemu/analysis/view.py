@@ -39,6 +39,10 @@ def parse_pins(spec: str, pin_count: int = 32) -> list[int]:
 
     >>> parse_pins("4..1,0")
     [4, 3, 2, 1, 0]
+    >>> parse_pins("0..1000000000")
+    Traceback (most recent call last):
+    ...
+    ValueError: pins must be 0..31, got '0..1000000000'
 
     Raises:
         ValueError: for text that is not a pin list or a pin out of range.
@@ -47,15 +51,17 @@ def parse_pins(spec: str, pin_count: int = 32) -> list[int]:
     for part in spec.replace(" ", "").split(","):
         if not part:
             continue
-        if ".." in part:
-            a, b = (int(x) for x in part.split("..", 1))
-            step = 1 if b >= a else -1
-            pins.extend(range(a, b + step, step))
-        else:
-            pins.append(int(part))
-    bad = [p for p in pins if not 0 <= p < pin_count]
-    if bad or not pins:
-        raise ValueError(f"pins must be 0..{pin_count - 1}, got {spec!r}")
+        ends = part.split("..", 1)
+        if not all(e.isascii() and e.isdigit() for e in ends):
+            raise ValueError(f"pins are numbers 0..{pin_count - 1} or ranges like 0..4, got {part!r}")
+        a, b = (int(e) for e in ends) if len(ends) == 2 else (int(ends[0]),) * 2
+        # check the ends before building the range: '0..1000000000' must not build a billion pins
+        if not (0 <= a < pin_count and 0 <= b < pin_count):
+            raise ValueError(f"pins must be 0..{pin_count - 1}, got {part!r}")
+        step = 1 if b >= a else -1
+        pins.extend(range(a, b + step, step))
+    if not pins:
+        raise ValueError(f"no pins in {spec!r}; expected e.g. 0..4 or 4..7,0")
     return pins
 
 

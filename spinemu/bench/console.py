@@ -5,12 +5,11 @@ A :class:`SerialConsole` attached to a run decodes the program's TX pin live
 bytes it is given, at the baud rate (:class:`spinemu.bench.uart.UartWaveform`).
 While a console is attached, RX idles at the idle level (high), as the
 adapter holds it; the other pins read what the run's input model says
-(pull-ups, ``--input`` stimuli), composed by
-:class:`spinemu.bench.inputs.PinOverride`.
+(pull-ups, ``--input`` stimuli).
 
-It works with any engine that offers the bench's engine interface (see
-:mod:`spinemu.bench`): ``clock_hz``, a settable ``inputs`` model and
-``add_pin_listener`` -- the Spin bytecode chip and the Python engine's chip.
+It is a bench part (:class:`spinemu.bench.part.Part`): it works on every
+engine -- the Propeller chip (Spin and PASM cogs), the Python engine's chip
+and the BASIC Stamp (its SEROUT and SERIN on P0-P15).
 
 >>> from spinemu.bench import SerialConsole
 >>> console = SerialConsole(tx=30, rx=31, baud=115_200)
@@ -23,7 +22,7 @@ from __future__ import annotations
 import math
 from typing import Callable, Optional, Union
 
-from .inputs import PinOverride
+from .part import Part
 from .terminal import stream_text
 from .uart import Frame, UartDecoder, UartFormat, UartWaveform
 
@@ -35,25 +34,7 @@ DEFAULT_TX, DEFAULT_RX, DEFAULT_BAUD = 30, 31, 115_200
 _SEND_MARGIN_CYCLES = 1000
 
 
-class _RxLine:
-    """The console's RX drive as an input model (only the RX bit matters)."""
-
-    def __init__(self, console: "SerialConsole"):
-        self.console = console
-        self.wave = console._wave
-        self.shift = console.rx
-
-    def levels(self, cycle: int) -> int:
-        return self.wave.level(cycle) << self.shift
-
-    def next_change(self, cycle: int) -> Optional[int]:
-        nxt = self.wave.next_change(cycle)
-        if nxt is None and self.console.live_input:
-            return cycle + self.console.poll_cycles       # keys may come: keep time moving
-        return nxt
-
-
-class SerialConsole:
+class SerialConsole(Part):
     """A serial terminal on two pins of a run.
 
     Args:
@@ -81,9 +62,14 @@ class SerialConsole:
             rate or stop-bit count.
     """
 
+    kind = "console"
+    pin_parameters = ("tx", "rx")
+
     def __init__(self, tx: int = DEFAULT_TX, rx: int = DEFAULT_RX, baud: float = DEFAULT_BAUD, *,
                  inverted: bool = False, stop_bits: int = 1,
-                 on_byte: Optional[Callable[[int, int], None]] = None, live_input: bool = False):
+                 on_byte: Optional[Callable[[int, int], None]] = None, live_input: bool = False,
+                 name: Optional[str] = None):
+        super().__init__(name=name)
         for name, pin in (("tx", tx), ("rx", rx)):
             if isinstance(pin, bool) or not isinstance(pin, int) or not 0 <= pin <= 31:
                 raise ValueError(f"{name} must be a pin number 0..31, not {pin!r}")
@@ -100,7 +86,6 @@ class SerialConsole:
         self.received: list[tuple[int, int]] = []
         self.errors: list[Frame] = []
         self.sent: list[tuple[int, int]] = []
-        self.clock_hz: Optional[int] = None
         #: every cycle before this one has been decoded
         self.now = 0
         #: the chip's present (bytes sent now start at or after it); ``None`` before the run
@@ -173,13 +158,19 @@ class SerialConsole:
         per = self._wave.frame_cycles
         self.sent.extend((start + per(i), b) for i, b in enumerate(data))
 
-    # ------------------------------------------------------------------ attaching
-    def attach(self, engine) -> None:
-        """Connect to a run before it starts: decode TX live, drive RX.
+    # ------------------------------------------------------------------ the part
+    @property
+    def name(self) -> str:
+        return self._name or f"console P{self.tx}/P{self.rx}"
 
-        ``engine`` is a :class:`spinemu.chip.Chip` (or the Python engine's
-        chip), or anything with ``clock_hz``, a settable ``inputs`` model and
-        ``add_pin_listener(listener, interval_cycles)``.
+    def driven_pins(self) -> tuple:
+        return (self.rx,)
+
+    def watched_pins(self) -> tuple:
+        return (self.tx,)
+
+    def connect(self, port) -> None:
+        """Connected to a run by its bench (``console.attach(engine)`` makes a one-part bench).
 
         Raises:
             RuntimeError: if this console is already attached to a run.
@@ -187,19 +178,27 @@ class SerialConsole:
         """
         if self._wave is not None:
             raise RuntimeError("a SerialConsole is attached to one run; make a new one for another run")
-        clock = int(engine.clock_hz)
+        clock = int(port.clock_hz)
         self._wave = UartWaveform(self.rx_format, clock)
         self._decoder = UartDecoder(self.tx_format, clock, on_frame=self._frame)
-        self.clock_hz = clock
+        super().connect(port)
         self.poll_cycles = max(1, clock // 100)
-        engine.inputs = PinOverride(engine.inputs, 1 << self.rx, _RxLine(self))
-        engine.add_pin_listener(self._pins, interval_cycles=max(1, clock // 100))
         pending, self._pending = self._pending, []
         for data, at_seconds, at_cycle in pending:
             self._queue(data, at_seconds, at_cycle)
 
-    def _pins(self, changes, upto: int, present: int) -> None:
-        """The chip's pin listener: decode TX up to ``upto``; bytes sent now start at ``present`` or later."""
+    def levels(self, cycle: int) -> int:
+        """The RX line (the console's drive)."""
+        return self._wave.level(cycle) << self.rx
+
+    def next_change(self, cycle: int) -> Optional[int]:
+        nxt = self._wave.next_change(cycle)
+        if nxt is None and self.live_input:
+            return cycle + self.poll_cycles       # keys may come: keep time moving
+        return nxt
+
+    def on_pins(self, changes, upto: int, present: int) -> None:
+        """Decode TX up to ``upto``; bytes sent now start at ``present`` or later."""
         tx, idle = self.tx, self.tx_format.idle
         decoder = self._decoder
         last = self._tx_level
@@ -214,6 +213,16 @@ class SerialConsole:
         decoder.advance(upto)
         if self.on_time is not None:
             self.on_time(upto)
+
+    def summary(self) -> str:
+        text = f"P{self.tx}: {len(self.received):,} bytes received at {self.baud:g} baud"
+        if self.sent:
+            text += f"; P{self.rx}: {len(self.sent):,} bytes sent"
+        return f"{self.name}: {text}"
+
+    def view(self) -> str:
+        lines = self.text.splitlines() or [""]
+        return lines[-1][-60:]
 
     def _frame(self, frame: Frame) -> None:
         if frame.error == "framing":

@@ -45,7 +45,7 @@ from .mathops import BINARY, MASK32, UNARY
 from .spin import random_forward, random_reverse
 from .timing import MATH_REF
 
-__all__ = ["BlockCompiler", "MAX_OPS", "HOT", "CODE", "BUSY"]
+__all__ = ["BlockCompiler", "MAX_OPS", "HOT", "CODE", "BUSY", "PROGRAM", "WATCHPOINT"]
 
 #: bytecodes in one block at most
 MAX_OPS = 48
@@ -53,6 +53,8 @@ MAX_OPS = 48
 HOT = 8
 #: ``Chip.watch`` bits: a parked busy loop reads the long, compiled code lies in it
 BUSY, CODE = 1, 2
+#: ``Chip.watch`` bits: the program's own code (runtime check), a debugger watchpoint
+PROGRAM, WATCHPOINT = 4, 8
 
 # math operators as expressions over operands that are names or literals
 _BINARY_EXPR = {
@@ -243,11 +245,15 @@ class BlockCompiler:
         self.acc = chip.access_at
         self.mem = chip.mem
         self.table = table
-        self.boundaries: set = set()      # addresses a block must start at (busy-loop heads)
+        self.boundaries: set = set(chip.interpret_only)   # addresses a block must start at (busy-loop heads)
+        self.interpret_only = chip.interpret_only          # ... and ones no block may start at
+        self.interpret_calls = chip.interpret_calls        # calls stay interpreted (runtime checks)
+        self.checks = chip.checks if chip.checks is not None and chip.checks.wants("waitcnt-passed") else None
         self.compiled: dict = {}          # start -> end of every compiled block
         self.env = {
             "L": chip.mem_longs, "W": chip.mem_words, "mem": chip.mem, "WATCH": chip.watch,
             "B": table, "STUB": stub, "RF": random_forward, "RR": random_reverse,
+            "CHECKS": chip.checks,
         }
         for f, fn in enumerate(BINARY):
             if fn is not None:
@@ -262,6 +268,8 @@ class BlockCompiler:
     # ------------------------------------------------------------------ public
     def compile(self, pc: int):
         """The block function for hub address ``pc``, or ``None`` if its first bytecode is not compiled."""
+        if pc in self.interpret_only:
+            return None
         b = _Block(pc)
         while True:
             if b.pc >= 0xFFF0 or b.n >= MAX_OPS or (b.n and b.pc in self.boundaries):
@@ -457,7 +465,7 @@ class BlockCompiler:
             b.push(addr)
             return self._account(b, op, T.var[op])
         a = b.let(addr)
-        b.deopt(f"{a} < 0x8000 and WATCH[{a} >> 2]")
+        b.deopt(f"{a} >= 0x8000 or WATCH[{a} >> 2]")
         if access == 1:
             v = b.pop()
             b.emit(f"if {a} < 0x8000: L[{a} >> 2] = {v}")
@@ -505,7 +513,7 @@ class BlockCompiler:
             return self._account(b, op, rest)
         # writes: leave the block first if the long is watched
         w = b.let(f"{a} & 0xFFFF")
-        b.deopt(f"{w} < 0x8000 and WATCH[{w} >> 2]")
+        b.deopt(f"{w} >= 0x8000 or WATCH[{w} >> 2]")
         if access == 1:
             v = b.pop()
             b.emit(f"if {w} < 0x8000: {self._sized_store(size, w, v)}")
@@ -708,7 +716,13 @@ class BlockCompiler:
         self._terminal_rest(b, op)
         issue = T.waitcnt_issue + T.waitcnt_min
         b.exit_lines(str(b.pc))
-        b.emit(f"return {b.now(issue + T.waitcnt_after)} + (({target} - ({b.now(issue)})) & 0xFFFFFFFF)")
+        if self.checks is None:
+            b.emit(f"return {b.now(issue + T.waitcnt_after)} + (({target} - ({b.now(issue)})) & 0xFFFFFFFF)")
+        else:                                           # the runtime check for a count already passed
+            b.emit(f"w = ({target} - ({b.now(issue)})) & 0xFFFFFFFF")
+            b.emit("if w & 0x80000000:")
+            b.emit(f"CHECKS.waitcnt(c, {target}, w, {b.now()})", 1)
+            b.emit(f"return {b.now(issue + T.waitcnt_after)} + w")
         b.end = True
 
     def _frame(self, b: _Block, op: int) -> None:
@@ -729,6 +743,8 @@ class BlockCompiler:
 
     def _call(self, b: _Block, op: int) -> None:
         T = self.T
+        if self.interpret_calls:
+            raise _Stop
         if op == 0x06:
             obj = self._byte(b)
         m = self._byte(b)
@@ -747,14 +763,14 @@ class BlockCompiler:
         b.emit(f"ent = L[((pb + {4 * m}) & 0xFFFF) >> 2]")
         b.emit("f6 = c.dcall")
         b.emit(f"nsp = {b.sp_expr()} + (ent >> 16)")
-        b.deopt("nsp > 0x8000 or not 0 <= f6 < 0x10000")
+        b.deopt("nsp > c.stack_end or not 0 <= f6 < 0x10000")
         if op == 0x06:
             b.emit("c.pbase = pb")
             b.emit("c.pbase_hi = pbh")
             b.emit("c.vbase = vbn")
         b.emit("c.dcall = W[f6 >> 1]")
         b.emit(f"W[f6 >> 1] = {ret}")
-        b.emit("c.dbase = f6 + 2")
+        b.emit("c.dbase = (f6 + 2) & 0xFFFF")
         b.emit("full = (pbh << 16 | pb) + ent")
         b.emit("c.pc = full & 0xFFFF")
         b.emit("c.pc_hi = (full >> 16) & 0xFFFF")

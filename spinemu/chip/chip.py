@@ -36,11 +36,12 @@ from dataclasses import dataclass, field
 from typing import Callable, Optional
 
 from ..diagnostics import EmulationError
-from ..image import BOOT_FRAME, HUB_SIZE, ImageHeader, load_image
+from ..bench.inputs import make_input_model
+from ..image import BOOT_FRAME, FALLBACK_CLOCK_HZ, HUB_SIZE, ImageHeader, load_image
 from ..trace import PinTrace
 from .blocks import HOT as BLOCK_THRESHOLD
-from .cog import PARKED, RUNNING, STOPPED, Cog
-from .control import CogStopped, Reschedule
+from .cog import PARKED, PIN_WAIT, RUNNING, STOPPED, Cog
+from .control import CogStopped, Halted, Reschedule
 from .listen import Listeners
 from .pins import Pins
 from .registers import Registers
@@ -88,6 +89,8 @@ class RunResult:
         warnings: things the emulation could not do faithfully.
         stats: bytecodes executed (total and per cog), PASM instructions
             (``pasm_instructions``, ``pasm_instructions_per_cog``), wall time, ...
+        runtime_warnings: the program's likely mistakes the run saw
+            (:class:`spinemu.runtime_warnings.RunWarning`, one per place).
     """
 
     trace: PinTrace
@@ -97,13 +100,15 @@ class RunResult:
     cog_events: list = field(default_factory=list)
     warnings: list = field(default_factory=list)
     stats: dict = field(default_factory=dict)
+    runtime_warnings: list = field(default_factory=list)
 
 
 class Chip(Pins, Listeners, Scheduler):
     """A Propeller 1 running one image.
 
     Args:
-        image: the bytes of a ``.binary`` or ``.eeprom`` image.
+        image: the bytes of a ``.binary`` or ``.eeprom`` image (a 32 KB
+            EEPROM image is loaded whole, as the boot loader does).
         compat: ``"spinsim"`` (default) or ``"chip"`` (see the module docstring).
         inputs: what pins nobody drives read: ``"pullup"``, ``"pulldown"``, or
             a stimulus (see :mod:`spinemu.chip.inputs`).  Default: pull-down
@@ -114,15 +119,30 @@ class Chip(Pins, Listeners, Scheduler):
         fast_forward: skip provably idle busy-wait loops (results unchanged).
         compile_blocks: run hot bytecode as compiled blocks (:mod:`.blocks`;
             results unchanged).
+        warn: runtime warnings (:mod:`spinemu.runtime_warnings`): ``True``
+            (default) collects them in ``RunResult.runtime_warnings``, ``False``
+            turns the checks off, or pass your own
+            :class:`~spinemu.runtime_warnings.WarningLog` (``werror``, a sink).
+        debug_info: the program's :class:`spinemu.debuginfo.DebugInfo` (from
+            ``CompiledProgram.debug_info()``): warnings then name variables and
+            methods, point at file:line:col, and the checks that need names
+            (stack arrays, uninitialized locals) run.
 
     Raises:
         ImageError: if ``image`` is not a valid Propeller image.
 
+    Bench parts (:mod:`spinemu.bench`) attach through ``clock_hz``,
+    ``pin_count``, ``inputs``, :attr:`drive_history` and
+    ``add_pin_listener``.
     """
+
+    #: pins of the P8X32A (port A)
+    pin_count = 32
 
     def __init__(self, image: bytes, *, compat: str = "spinsim", inputs=None,
                  source_map: Optional[Callable] = None, fast_forward: bool = True,
-                 timing: Optional[Timing] = None, compile_blocks: bool = True, labels=None):
+                 timing: Optional[Timing] = None, compile_blocks: bool = True, labels=None, warn=True,
+                 debug_info=None):
         if compat not in COMPAT_MODES:
             raise ValueError(f"compat must be one of {COMPAT_MODES}, not {compat!r}")
         binary = load_image(bytes(image))
@@ -134,12 +154,13 @@ class Chip(Pins, Listeners, Scheduler):
         self.fast_forward = fast_forward
         self.compile_blocks = compile_blocks
         self.timing = timing or load_timing()
-        from .inputs import make_input_model
         self.inputs = make_input_model(inputs, pull_up=self.spinsim)
 
         self.mem = bytearray(0x10000)
         self.mem[0x8000:] = build_rom()
-        self.mem[: len(binary)] = binary
+        # the boot loader copies all 32 KB of an EEPROM (data a program stored there included)
+        boot = bytes(image) if len(image) == HUB_SIZE else binary
+        self.mem[: len(boot)] = boot
         frame = BOOT_FRAME.to_bytes(4, "little") * 2
         self.mem[self.header.dbase - 8: self.header.dbase] = frame
         view = memoryview(self.mem)
@@ -155,24 +176,48 @@ class Chip(Pins, Listeners, Scheduler):
         self.lock_used = [False] * 8
         if self.spinsim:
             self.lock_used[0] = True        # spinsim keeps lock 0 for itself
-        self.clock_hz = self.header.clkfreq
+        self.clock_hz = self.header.clkfreq or FALLBACK_CLOCK_HZ     # the time base of the trace
         from .counters import Counters
         from .pinfold import PinFold
         self.counters = Counters(self)
         self.counters_on = False        # some counter is in an output mode (else pins skip them)
         self.registers = Registers(self)
-        #: one flag per hub long: set while a parked busy loop (fastforward.py) reads it
+        #: one flag per hub long: set while a parked busy loop (fastforward.py) reads it; the
+        #: other bits of blocks.py (CODE, PROGRAM, WATCHPOINT) also send writes to watch_hit
         self.watch = bytearray(0x10000 >> 2)
         self._parked: list = []
+        self.debug_info = debug_info
+        #: called as f(cog, cycle) right after a cog changes its DIRA/OUTA (before other cogs run);
+        #: f(cog, hub_addr, op, cycle) before a write to a long with a PROGRAM or WATCHPOINT watch bit
+        #: (runtime checks, debuggers; the bench's live listeners are pin_listeners, listen.py)
+        self.pin_hooks: list = []
+        self.write_hooks: list = []
+        #: bytecode addresses no compiled block may start at or run through; calls stay interpreted
+        self.interpret_only: set = set()
+        self.interpret_calls = False
+        #: a debugger or profiler: ``before(chip, cog)`` / ``after(chip, cog, pc, t)`` around every
+        #: bytecode, run by the instrumented loop (Scheduler._run_spin_probed); None for full speed
+        self.probe = None
+        self.warning_log = None
+        self.checks = None
+        if warn is not False:
+            from .checks import RuntimeChecks
+            self.warning_log = _default_log(debug_info, source_map) if warn is True else warn
+            self.checks = RuntimeChecks(self, self.warning_log, debug_info)
         self.handlers = build_handlers(self, self.timing)
         self.access_at = access_offsets()
         self._handlers = list(self.handlers)      # the real ones, while a preemption is pending
         self._preempt = False
+        self._halt_reason = None
         self.pin_events: list = []          # (cycle, seq, cog, dira, outa, running)
         self.pin_fold = PinFold(self)       # pin events and counter outputs folded into pin states (pinfold.py)
         self._init_listeners()              # live pin listeners (listen.py)
+        self._drives = None                 # the drive history bench parts read (drives.py), on first use
         self.cog_events: list = []
         self.warnings: list = []
+        if not self.header.clkfreq:
+            self.warnings.append(f"the image's header gives a clock of 0 Hz; times are counted at "
+                                 f"{FALLBACK_CLOCK_HZ:,} Hz (RCFAST)")
         self._seq = 0
         self._started = False
         self._booted = False
@@ -200,9 +245,25 @@ class Chip(Pins, Listeners, Scheduler):
         #: the run's cycle limit (engines that run ahead never pass it)
         self.run_limit = _NEVER
         self._last_stop = 0
+        self._last_limit = _NEVER       # the limit of the latest advance()
         self.pasm = None            # the PASM engine (pasm_cog.py), made when a PASM cog starts
         self._clock_mode = self.header.clkmode
+        if self.checks is not None:
+            self.checks.install()
 
+    def wrap_handler(self, op: int, handler) -> None:
+        """Replace the interpreter's handler for bytecode ``op`` (runtime checks, tools)."""
+        self.handlers[op] = handler
+        self._handlers[op] = handler
+
+
+    @property
+    def drive_history(self):
+        """What the cogs drove on the pins, for bench parts (:class:`spinemu.chip.drives.ChipDrives`)."""
+        if self._drives is None:
+            from .drives import ChipDrives
+            self._drives = ChipDrives(self)
+        return self._drives
 
     # ------------------------------------------------------------------ faults
     def fault(self, c: Cog, hub_addr: int, message: str) -> EmulationError:
@@ -235,6 +296,8 @@ class Chip(Pins, Listeners, Scheduler):
         c.scratch[9] = c.id
         c.dcall = 0
         c.t = self.timing.interpreter_start(t_first, c.hub_phase)
+        if self.checks is not None:
+            self.checks.cog_started(c)
         self.cog_events.append((t_first, c.id, "start",
                                 f"Spin method at ${c.pc:04X}" + (f" (started by cog {by.id})" if by else "")))
         if keep != (0, 0):
@@ -282,6 +345,8 @@ class Chip(Pins, Listeners, Scheduler):
         if cog_id >= 8:                         # the ROM clamps: 8 and up = "a free cog"
             free = [k for k in self.cogs if k.state == STOPPED]
             if not free:
+                if self.checks is not None:
+                    self.checks.no_free_cog(c, code, par, done)
                 return 0xFFFFFFFF
             target = free[0]
         else:
@@ -407,20 +472,44 @@ class Chip(Pins, Listeners, Scheduler):
             raise RuntimeError("a Chip runs once; make a new Chip to run again")
         self._started = True
         wall = time.perf_counter()
-        limit = _NEVER if max_cycles is None else max_cycles
+        reason = self.advance(max_cycles, progress)
+        return self.result(reason, time.perf_counter() - wall)
+
+    def advance(self, until: Optional[int] = None, progress: Optional[Callable[[int], None]] = None) -> str:
+        """Run on from where the chip is until cycle ``until`` (``None``: until every cog stops).
+
+        Unlike :meth:`run`, this can be called again and again (the test
+        harness and the debugger do): the chip goes on exactly as one long
+        run would.  Returns why it stopped: a :class:`RunResult` reason, or
+        the reason a probe gave when it stopped the run (a breakpoint).
+        """
+        limit = _NEVER if until is None else until
         if not self._booted:
             self._boot()
+        self._cogs_changed = True
+        self._last_limit = limit
         self._listen_end = limit + 1 if limit < _NEVER else _NEVER
-        reason = self._schedule(limit, progress)
-        end = self.now if reason != "cycle limit" else limit
+        try:
+            return self._schedule(limit, progress)
+        except Halted as h:
+            return h.reason
+        finally:
+            if self._halt_reason is not None:   # a halt nobody reached: forget it
+                self._halt_reason = None
+                self.handlers[:] = self._handlers
+                self._preempt = False
+
+    def result(self, reason: str = "cycle limit", wall: float = 0.0) -> RunResult:
+        """The :class:`RunResult` of the run so far (trace, hub RAM, statistics) at cycle ``now``."""
+        end = self._last_limit if reason == "cycle limit" and self._last_limit < _NEVER else self.now
         if reason == "all cogs stopped":        # an engine may stop a cog ahead of another's last events
             end = max(end, self._last_stop)
         if self.pin_listeners:      # pins nothing can change any more stay as they are for ever
             self._listen_end = end + 1
             self._deliver_pins(_NEVER if reason in _FINAL_REASONS else end + 1, end + 1)
-        wall = time.perf_counter() - wall
+            self._run_ended(end)
         trace = self._build_trace(end)
-        self.warnings.extend(self.counters.end_warnings(end))
+        warnings = list(self.warnings) + list(self.counters.end_warnings(end))
         per_cog = {c.id: c.bytecodes for c in self.cogs if c.bytecodes}
         pasm_cogs = {c.id: c.instructions for c in self.cogs if c.instructions}
         stats = {"bytecodes": sum(per_cog.values()), "bytecodes_per_cog": per_cog,
@@ -432,7 +521,54 @@ class Chip(Pins, Listeners, Scheduler):
             stats.update(self.pasm.stats())
         stats["pll"] = [p._asdict() for p in self.counters.pll_outputs(end)]
         return RunResult(trace, bytes(self.mem[:HUB_SIZE]), end, reason, list(self.cog_events),
-                         list(self.warnings), stats)
+                         warnings, stats,
+                         list(self.warning_log.items) if self.warning_log is not None else [])
+
+    # ------------------------------------------------------------------ tools
+    def peek(self, hub_addr: int, size: int = 4) -> int:
+        """The byte, word or long (``size`` 1, 2, 4) of hub RAM at ``hub_addr`` (unsigned)."""
+        a = hub_addr & 0xFFFF
+        if size == 1:
+            return self.mem[a]
+        if size == 2:
+            return self.mem_words[a >> 1]
+        return self.mem_longs[a >> 2]
+
+    def poke(self, hub_addr: int, value: int, size: int = 4) -> None:
+        """Write hub RAM from outside the program, now (between bytecodes).
+
+        A parked busy loop that reads the long is brought up to the present
+        first, so the program sees the new value exactly from this cycle on.
+        """
+        a = hub_addr & 0xFFFF
+        if a >= HUB_SIZE:
+            raise ValueError(f"${a:04X} is not in hub RAM ($0000-$7FFF)")
+        for p in list(self._parked):
+            if any(((i << shift) & 0xFFFF) >> 2 == a >> 2 for shift, i, _ in p.busy.reads):
+                self._unpark(p, self.now)
+                self._cogs_changed = True
+        if size == 1:
+            self.mem[a] = value & 0xFF
+        elif size == 2:
+            self.mem_words[a >> 1] = value & 0xFFFF
+        else:
+            self.mem_longs[a >> 2] = value & 0xFFFFFFFF
+
+    def release_pin_wait(self, cog_id: int, t: Optional[int] = None) -> None:
+        """End cog ``cog_id``'s WAITPEQ/WAITPNE as if its condition had come true at cycle ``t`` (default ``now``)."""
+        c = self.cogs[cog_id]
+        if c.state != PIN_WAIT:
+            raise ValueError(f"cog {cog_id} is not waiting on pins")
+        after = c.pin_wait[3]
+        self._pin_waiters.remove(c)
+        c.pin_wait = None
+        c.state = RUNNING
+        c.t = (self.now if t is None else t) + after
+        self._cogs_changed = True
+
+    def pin_trace(self, until: Optional[int] = None):
+        """The :class:`~spinemu.trace.PinTrace` of the run so far (up to ``until``, default ``now``)."""
+        return self._build_trace(self.now if until is None else until)
 
     def _ff_stats(self) -> dict:
         return {"fast_forward": self.fast_forward, "busy_loops_learned": self._ff_loops,
@@ -444,6 +580,7 @@ class Chip(Pins, Listeners, Scheduler):
         self._booted = True
         self._ext_seen = 0
         self._pin_waiters = []
+        self._reactive_inputs = bool(getattr(self.inputs, "reactive", False))
         self._video_ready = [0] * 8
         cog0 = self.cogs[0]
         # The boot loader starts the interpreter in cog 0 with PAR = $0004
@@ -453,3 +590,13 @@ class Chip(Pins, Listeners, Scheduler):
         t_first = 0
         self.start_spin_cog(cog0, 0x0004, t_first, None)
         self.cog_events[-1] = (t_first, 0, "start", f"Spin method at ${cog0.pc:04X} (boot)")
+
+
+def _default_log(debug_info, source_map):
+    """A WarningLog that places warnings with the debug info (file:line:col) or the source map."""
+    from ..runtime_warnings import WarningLog
+
+    if debug_info is not None:
+        return WarningLog(debug_info.position, debug_info.source_line)
+    return WarningLog(source_map)
+

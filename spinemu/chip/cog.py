@@ -48,6 +48,8 @@ class Cog:
         "bytecodes", "instructions",
         # fast-forward: the learned busy loop, and when to try learning next
         "busy", "learn_mark", "learn_after", "park_t0",
+        # runtime checks: where the stack array cognew gave the cog ends (else the end of hub RAM)
+        "stack_end", "stack_info",
     )
 
     def __init__(self, cog_id: int):
@@ -64,6 +66,8 @@ class Cog:
         self.learn_mark = 0
         self.learn_after = 0
         self.park_t0 = 0
+        self.stack_end = 0x8000
+        self.stack_info = None
         self.reset_registers()
 
     def reset_registers(self) -> None:

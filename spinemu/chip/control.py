@@ -7,7 +7,7 @@ the cog's next bytecode, as a normal handler would have returned.
 """
 from __future__ import annotations
 
-__all__ = ["Reschedule", "CogStopped", "RebootRequested", "Preempted"]
+__all__ = ["Reschedule", "CogStopped", "RebootRequested", "Preempted", "Halted"]
 
 
 class Reschedule(Exception):
@@ -36,3 +36,12 @@ class Preempted(Exception):
     """Raised *instead of* running the next bytecode: a parked cog was woken
     (fastforward.py) and the scheduler must run it first.  The bytecode has
     not started; the run loop puts the cog back before it."""
+
+
+class Halted(Exception):
+    """A probe (a debugger, the test harness) stops the run *between* two
+    bytecodes of one cog (spinemu.chip.probe); ``Chip.advance`` returns
+    ``reason``, and the chip can go on from there."""
+
+    def __init__(self, reason: str):
+        self.reason = reason

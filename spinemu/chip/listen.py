@@ -26,7 +26,12 @@ cog waits on pins that nothing is going to change, :meth:`Listeners._idle_listen
 lets listeners see time pass (they may send input) before the run ends at the
 cycle limit or in a deadlock.  The last call, at the end of the run, has
 ``upto`` one past the last cycle, or ``1 << 62`` when nothing can change the
-pins any more (every cog stopped, a deadlock).  Without listeners none of
+pins any more (every cog stopped, a deadlock); then a listener object with a
+``run_ended`` method is told the run's last cycle.  When the scheduler jumps
+over more than two intervals (every cog in WAITCNT, a pin wait for a far
+edge), the listeners still get a call every ``listen_interval`` cycles of it
+(a live view keeps moving), each with the pins up to that cycle; shorter
+jumps get one call, as before.  Without listeners none of
 this runs.
 
 Each call folds only what is new since the previous one (the pin events
@@ -94,7 +99,21 @@ class Listeners:
                 h = x
         self._listen_at = now + self.listen_interval
         # a listener may make an input change at present, which can wake a waiting cog there
-        self._deliver_pins(min(h, present), present)
+        upto = min(h, present)
+        step = self.listen_interval
+        if upto - self._listened_to > 2 * step:     # time jumped (WAITCNT, a far pin edge): keep the interval
+            t = self._listened_to + step
+            while t < upto:
+                self._deliver_pins(t, present)
+                t += step
+        self._deliver_pins(upto, present)
+
+    def _run_ended(self, end: int) -> None:
+        """After the last call: tell the listeners that have ``run_ended`` the run's last cycle."""
+        for listener in self.pin_listeners:
+            ended = getattr(listener, "run_ended", None)
+            if ended is not None:
+                ended(end)
 
     def _idle_listen(self, limit: int) -> bool:
         """Every cog waits on pins nothing will change: step time for the listeners.

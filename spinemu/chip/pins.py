@@ -61,6 +61,11 @@ class Pins:
             self._wake_pin_waiters(t, c, seen)
             if self.counters.feedback_on:       # a feedback output follows its input one clock later
                 self._wake_pin_waiters(t + 1, c)
+            if self._reactive_inputs:           # a bench part may answer later: the scheduler asks it again
+                self._request_preemption()
+        if self.pin_hooks:
+            for f in self.pin_hooks:
+                f(c, t)
 
     def wait_pins(self, c: Cog, mask: int, state: int, equal: bool, tf: int) -> int:
         issue, after = self.timing.waitpin[equal]

@@ -9,19 +9,23 @@ future; a stopped or pin-waiting cog is skipped; a parked busy loop
 
 Hot paths: :meth:`Scheduler._schedule` and :meth:`Scheduler._run_spin` (the
 bytecode loop: one list-indexed handler per bytecode, no flag checks; a rare
-event leaves it by exception, see :mod:`spinemu.chip.control`).
+event leaves it by exception, see :mod:`spinemu.chip.control`).  The
+instrumented loops (:meth:`Scheduler._run_spin_traced` for the recorder,
+:meth:`Scheduler._run_spin_probed` for a debugger or profiler) are only
+chosen when one is attached.
 """
 from __future__ import annotations
 
-from .blocks import BUSY, BlockCompiler
+from .blocks import BUSY, PROGRAM, WATCHPOINT, BlockCompiler
 from .cog import PARKED, RUNNING, Cog
-from .control import CogStopped, Preempted, RebootRequested, Reschedule
+from .control import CogStopped, Halted, Preempted, RebootRequested, Reschedule
 from .fastforward import INTERRUPTED, LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
 
 __all__ = ["Scheduler", "NEVER"]
 
 NEVER = 1 << 62
 _NEVER = NEVER
+_OBSERVED = PROGRAM | WATCHPOINT
 
 
 def _preempt_handler(c, op, t):
@@ -69,8 +73,9 @@ class Scheduler:
         self.run_limit = limit
         next_report = 0
         traced = self.recorder is not None
-        ff = self.fast_forward and not traced
-        run = self._run_spin_traced if traced else self._run_plain
+        probed = self.probe is not None
+        ff = self.fast_forward and not traced and not probed
+        run = self._run_spin_traced if traced else self._run_spin_probed if probed else self._run_plain
         running: list = []
         generic = False
         listening = bool(self.pin_listeners)
@@ -117,6 +122,8 @@ class Scheduler:
                 self._wake_pin_waiters(ext)
                 continue
             if c is None:
+                if self._halt_reason is not None:   # a halt was asked for: stop before time is stepped
+                    self._end_preemption()
                 if self._parked and not self._pin_waiters:
                     if limit >= _NEVER:
                         return "stalled"
@@ -265,12 +272,18 @@ class Scheduler:
             self._run_spin(c, t_limit)
 
     def watch_hit(self, writer: Cog, hub_addr: int, t: int, op: int) -> None:
-        """``writer``'s bytecode ``op``, started at ``t``, is about to write a hub long a parked loop reads.
+        """``writer``'s bytecode ``op``, started at ``t``, is about to write a watched hub long.
 
-        The parked cog is brought up to ``t`` first (it reads the old value, as
-        it would have), and the writer's run loop is preempted after this
-        bytecode, so that the scheduler interleaves the two cogs again.
+        ``write_hooks`` (runtime checks, debugger watchpoints) are told
+        first, as ``f(writer, hub_addr, op, t)``, when the long carries one of
+        their bits.  A parked cog that reads the long is brought up to ``t``
+        (it reads the old value, as it would have), and the writer's run loop
+        is preempted after this bytecode, so that the scheduler interleaves
+        the two cogs again.
         """
+        if self.watch[hub_addr >> 2] & _OBSERVED:
+            for f in self.write_hooks:
+                f(writer, hub_addr, op, t)
         tf = t + 12
         self.watch_hit_at(writer, hub_addr, tf + ((writer.hub_phase - tf) & 15) + self.access_at[op])
 
@@ -292,6 +305,20 @@ class Scheduler:
     def _end_preemption(self) -> None:
         self.handlers[:] = self._handlers
         self._preempt = False
+        if self._halt_reason is not None:       # request_halt: stop here, at the start of a slice
+            reason, self._halt_reason = self._halt_reason, None
+            raise Halted(reason)
+
+    def request_halt(self, reason: str) -> None:
+        """Stop the run before the next bytecode that starts a scheduler slice (``advance`` returns ``reason``).
+
+        Call it from a handler whose bytecode ends its cog's slice (one that
+        raises :class:`~spinemu.chip.control.Reschedule`, such as a wait): the
+        run then stops at a point where every cog's state is complete.  It
+        rides on the preemption mechanism, so the fast loops check nothing new.
+        """
+        self._halt_reason = reason
+        self._request_preemption()
 
     def _learn(self, c: Cog, until: int) -> None:
         if self._tracking is None:
@@ -447,6 +474,43 @@ class Scheduler:
             fn = _interpreted
         self._blocks[pc] = fn
         return fn(c, tf, limit)
+
+    def _run_spin_probed(self, c: Cog, limit: int) -> None:
+        """The instrumented twin of :meth:`_run_spin` for a probe (debugger, profiler).
+
+        Runs ``c`` one bytecode at a time, exactly as the plain loop would
+        (same limit test, same handlers, back to the scheduler after a
+        bytecode that changes what the cogs do), and calls ``probe.before(chip, cog)``
+        before each and ``probe.after(chip, cog, pc, t)`` after it (``pc``,
+        ``t``: where and when it started).  Either may raise
+        :class:`~spinemu.chip.control.Halted` to stop the run between two
+        bytecodes.
+        """
+        if self._preempt:                       # as _run_spin: a pending preemption ends the slice at once
+            self._end_preemption()
+            return
+        probe = self.probe
+        run = self._run_spin
+        try:
+            while c.state == RUNNING:
+                key = self._key(c)
+                if key >= limit:
+                    return
+                probe.before(self, c)
+                pc, t = c.pc, c.t
+                self.now = t
+                run(c, key + 1)
+                if self._preempt:               # it woke a cog waiting on pins: let the scheduler look
+                    self._end_preemption()
+                    probe.after(self, c, pc, t)
+                    return
+                probe.after(self, c, pc, t)
+                if self._cogs_changed:          # it started, stopped or parked a cog (Reschedule): so
+                    return                      # does the plain loop, and the scheduler looks again
+        except Halted:
+            if c.state == RUNNING:
+                self.now = c.t
+            raise
 
     def _run_spin_traced(self, c: Cog, limit: int) -> None:
         """The instrumented twin of :meth:`_run_spin`: runs one bytecode and records it."""

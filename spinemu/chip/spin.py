@@ -83,6 +83,8 @@ def build_handlers(chip, timing: Timing):
     sized_read = (mem.__getitem__,
                   lambda a: W[a >> 1],
                   lambda a: L[a >> 2])
+    checks = getattr(chip, "checks", None)      # runtime warnings (spinemu.chip.checks), or None
+    outside = checks.write_outside if checks is not None and checks.wants("write-outside-hub") else None
 
     def sized_write(size, a, v, c, t, op):
         a &= 0xFFFF
@@ -95,6 +97,8 @@ def build_handlers(chip, timing: Timing):
                 W[a >> 1] = v & 0xFFFF
             else:
                 L[a >> 2] = v & MASK32
+        elif outside is not None:
+            outside(c, a, 1 << size, t)
 
     def fetched(c, t):
         """The cycle the opcode fetch of a bytecode started at ``t`` completes."""
@@ -231,11 +235,13 @@ def build_handlers(chip, timing: Timing):
         frame6 = c.dcall
         c.dcall = W[frame6 >> 1]
         W[frame6 >> 1] = c.pc & 0xFFFF
-        c.dbase = frame6 + 2
+        c.dbase = (frame6 + 2) & 0xFFFF         # a 16-bit register (a corrupt frame chain can carry it past $FFFF)
         ent = L[((c.pbase + 4 * m) & 0xFFFF) >> 2]
         sp = c.sp + (ent >> 16)
-        if sp > 0x8000:
-            raise chip.fault(c, c.pc - 2, f"stack overflow: the call needs the stack up to ${sp:04X}, past the end of hub RAM")
+        if sp > c.stack_end:
+            if sp > 0x8000:
+                raise chip.fault(c, c.pc - 2, f"stack overflow: the call needs the stack up to ${sp:04X}, past the end of hub RAM")
+            chip.checks.stack_past_array(c, sp, c.pc - 1, (c.pbase + ent) & 0xFFFF)
         c.sp = sp
         full = (c.pbase_hi << 16 | c.pbase) + ent
         c.pc = full & 0xFFFF
@@ -289,7 +295,7 @@ def build_handlers(chip, timing: Timing):
         i = (c.sp - 4) >> 2
         v = (L[i] - 1) & MASK32
         if v:
-            L[i] = v
+            L[i] = v            # the ROM writes the count back only when it loops again
             c.pc += off
             return T.djnz[(long_, True)]
         c.sp -= 4                   # popped: the count's long keeps its last value (1), as on the chip
@@ -372,18 +378,20 @@ def build_handlers(chip, timing: Timing):
         return T.lookdown_value[False]
 
     def op_lookup_range(c, op, t):
-        hi = _signed(pop(c))
-        lo = _signed(pop(c))
+        # 32-bit arithmetic as the ROM does it: count = |hi - lo| + 1 (wrapping, so
+        # $8000_0000..$7FFF_FFFF counts 0 items), matched when index - base < count unsigned
+        hi = pop(c)
+        lo = pop(c)
         sp = c.sp
         base_i = (sp - 12) >> 2
-        base = _signed(L[base_i])
-        index = _signed(L[(sp - 4) >> 2])
-        span = abs(hi - lo)
-        k = index - base
-        if 0 <= k <= span:
-            _look_found(c, (lo + k if hi >= lo else lo - k) & MASK32)
+        base = L[base_i]
+        up = _signed(hi) >= _signed(lo)
+        count = ((hi - lo if up else lo - hi) + 1) & MASK32
+        k = (L[(sp - 4) >> 2] - base) & MASK32
+        if k < count:
+            _look_found(c, (lo + k if up else lo - k) & MASK32)
             return T.lookup_range[True]
-        L[base_i] = (base + span + 1) & MASK32
+        L[base_i] = (base + count) & MASK32
         return T.lookup_range[False]
 
     def op_lookdown_range(c, op, t):
@@ -490,6 +498,16 @@ def build_handlers(chip, timing: Timing):
         wait = (target - issue - T.waitcnt_min) & MASK32
         return T.waitcnt_issue + T.waitcnt_min + wait + T.waitcnt_after
 
+    if checks is not None and checks.wants("waitcnt-passed"):
+        def op_waitcnt(c, op, t):               # the same, with the runtime check for a count already passed
+            tf = fetched(c, t)
+            target = pop(c)
+            issue = tf + T.waitcnt_issue
+            wait = (target - issue - T.waitcnt_min) & MASK32
+            if wait & 0x80000000:
+                checks.waitcnt(c, target, wait, tf)
+            return T.waitcnt_issue + T.waitcnt_min + wait + T.waitcnt_after
+
     def op_push_spr(c, op, t):
         tf = fetched(c, t)
         r = 0x1F0 + (pop(c) & 0xF)
@@ -548,6 +566,7 @@ def build_handlers(chip, timing: Timing):
             value = L[c.dbase >> 2]
         abort = op < 0x32
         frames = 0
+        at = c.pc - 1
         while True:
             d = c.dbase
             c.pc = W[(d - 2) >> 1]
@@ -561,6 +580,9 @@ def build_handlers(chip, timing: Timing):
             frames += 1
             if not abort or flags & 2:
                 break
+            if frames > 0x2000:     # more frames than 64 KB holds: the chain loops, the ROM would search for ever
+                raise chip.fault(c, at, "ABORT found no frame to catch it in a frame chain that loops "
+                                          "(a corrupt stack): the interpreter would unwind for ever")
         if not flags & 1:
             push(c, value)
         return T.returns(op, frames, not flags & 1)
@@ -673,6 +695,8 @@ def build_handlers(chip, timing: Timing):
                     if WATCH[a >> 2]:
                         chip.watch_hit(c, a, t, op)
                     L[a >> 2] = L[sp >> 2]
+                elif outside is not None:
+                    outside(c, a, 4, t)
                 return rest
         elif access == 3:
             def h(c, op, t):
@@ -693,6 +717,8 @@ def build_handlers(chip, timing: Timing):
                     if WATCH[a >> 2]:
                         chip.watch_hit(c, a, t, op)
                     L[a >> 2] = new & MASK32
+                elif outside is not None:
+                    outside(c, a, 4, t)
                 return using_rest + arest
         h.__name__ = "op_var_long"
         return h

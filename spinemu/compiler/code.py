@@ -15,13 +15,23 @@ Sizing follows what OpenSpin 1.00.81 does (observed with probe programs):
   the previous pass* fits, an address push is ``PUSH_IMM1`` when that address
   is below 256; a backward jump is sized from its exact distance;
 * this stops when a pass changes no size.  Sizes only ever shrink, so a
-  forward jump that needs exactly 63 stays long.
+  forward jump that needs exactly 63 stays long -- except a ``next`` in
+  ``repeat ... while/until``, measured from the end of its long form, which
+  becomes short (see :class:`Label`).
 * string addresses always use the 2-byte offset form (``87 80 xx``);
 * the string pool is in source order (an ``other`` case block is compiled
-  before the other blocks but its strings keep their place).
+  before the other blocks but its strings keep their place);
+* in an assignment whose target has a string in it (``a[strsize(string("x"))]
+  := ...``), the strings of the value get addresses but no place in the pool:
+  OpenSpin allocates the target's strings, then the value's, then goes back
+  to the target and allocates its strings again from where they started, so
+  the strings that follow are written over the value's (those addresses then
+  hold other text).  The same happens to the arguments of ``obj[i].m(...)``
+  when ``i`` holds a string.  spinemu makes the same image.
 """
 from __future__ import annotations
 
+from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import Optional
 
@@ -31,12 +41,18 @@ __all__ = ["Label", "CodeBuffer", "Span"]
 
 
 class Label:
-    """A place in a method's code (bound by :meth:`CodeBuffer.mark`)."""
+    """A place in a method's code (bound by :meth:`CodeBuffer.mark`).
 
-    __slots__ = ("name",)
+    ``late``: forward jumps to it are sized from the end of their long form
+    (OpenSpin does this for ``next`` in ``repeat ... while/until``: a jump of
+    exactly 63 bytes there is short, elsewhere long).
+    """
 
-    def __init__(self, name: str = ""):
+    __slots__ = ("name", "late")
+
+    def __init__(self, name: str = "", late: bool = False):
         self.name = name
+        self.late = late
 
     def __repr__(self) -> str:  # pragma: no cover - debugging aid
         return f"Label({self.name!r})"
@@ -64,6 +80,10 @@ class CodeBuffer:
         self.pos = None
         self.strings: list[bytes] = []
         self._string_index: dict = {}
+        #: per string: the rewinding contexts it is in, ((context, "target"|"value"), ...) outermost first
+        self._paths: list = []
+        self._path: list = []
+        self._contexts = 0
 
     # -- emitting
     def emit(self, data, note: str = "") -> None:
@@ -91,7 +111,27 @@ class CodeBuffer:
         index = len(self.strings)
         self.strings.append(data + b"\0")
         self._string_index[index] = (where.line, where.col) if where is not None else (0, index)
+        self._paths.append(tuple(self._path))
         self.items.append([_STR, b"", self.pos, note, index])
+
+    def new_context(self) -> int:
+        """A new rewinding context (an assignment whose target holds a string, ...): see :meth:`part`."""
+        self._contexts += 1
+        return self._contexts
+
+    @contextmanager
+    def part(self, context: int, role: str):
+        """Strings pushed inside the block belong to ``context``'s ``"target"`` or ``"value"``.
+
+        OpenSpin allocates a context's target strings, then its value strings, then
+        allocates the target strings again from where they started: the value strings
+        keep their addresses but the pool goes on from the end of the target strings.
+        """
+        self._path.append((context, role))
+        try:
+            yield
+        finally:
+            self._path.pop()
 
     def mark(self, label: Label) -> None:
         self.items.append([_MARK, b"", self.pos, "", label])
@@ -129,7 +169,7 @@ class CodeBuffer:
                     elif prev is None:
                         size = 2
                     else:
-                        size = 1 if -64 <= prev[target] - end_short <= 63 else 2
+                        size = 1 if -64 <= prev[target] - end_short - target.late <= 63 else 2
                     if size != item[5]:
                         changed = True
                         item[5] = size
@@ -148,15 +188,35 @@ class CodeBuffer:
             prev = here
         return self._spans(start, here, addr)
 
+    def _pool(self, order: list, at: int) -> tuple[dict, list]:
+        """Each string's address, and the strings that stay in the pool (in order), for a pool at ``at``."""
+        offsets: dict = {}
+        kept = []
+        resume: dict = {}
+        prev: tuple = ()
+        for i in order:
+            path = self._paths[i]
+            k = 0
+            while k < min(len(prev), len(path)) and prev[k] == path[k]:
+                k += 1
+            for context, role in reversed(prev[k:]):
+                if role == "value":
+                    at = resume[context]
+            for context, role in path[k:]:
+                if role == "value":
+                    resume[context] = at
+            offsets[i] = at
+            at += len(self.strings[i])
+            if all(role != "value" for _, role in path):
+                kept.append(i)
+            prev = path
+        return offsets, kept
+
     def _spans(self, start: int, labels: dict, code_end: int) -> tuple[list, int]:
         spans = []
         addr = start
         order = sorted(range(len(self.strings)), key=lambda i: self._string_index[i])
-        pool_offset = {}
-        at = code_end
-        for i in order:
-            pool_offset[i] = at
-            at += len(self.strings[i])
+        pool_offset, kept = self._pool(order, code_end)
         for item in self.items:
             kind = item[0]
             if kind == _MARK:
@@ -176,7 +236,7 @@ class CodeBuffer:
             if data:
                 spans.append(Span(addr, data, item[2], item[3]))
             addr += len(data)
-        for i in order:
+        for i in kept:
             s = self.strings[i]
             spans.append(Span(addr, s, None, "string"))
             addr += len(s)

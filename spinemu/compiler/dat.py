@@ -5,8 +5,10 @@ computes values.  Layout rules (Propeller Manual, DAT; observed on OpenSpin
 1.00.81):
 
 * ``byte``/``word``/``long`` data is aligned to its size (zero padding);
-  inside a line, size overrides (``byte 1, word 2``) are not aligned;
-  values are cut to the item size; floats only fit ``long`` items;
+  inside a line, size overrides (``byte 1, word 2``) are not aligned, hold
+  for the rest of the line (``byte 1, word 2, 3`` stores 3 as a word) and
+  may not be smaller than the line's size; values are cut to the item size;
+  floats only fit ``long`` items;
 * an instruction is one aligned long;
 * a label takes the address and size of its line's data; a label alone on a
   line takes the current (unaligned) address and the size of the previous
@@ -15,7 +17,9 @@ computes values.  Layout rules (Propeller Manual, DAT; observed on OpenSpin
   ``org``); ``@label`` its offset in the object; ``$`` the current cog address;
 * ``res n`` reserves cog longs without hub bytes; ``fit n`` checks the cog
   address against ``n`` (default $1F0); ``org``, ``res`` and ``fit`` align
-  to a long; ``file "x"`` includes a binary file;
+  to a long; ``file "x"`` includes a binary file, looked up as OBJ files are
+  (the object's folder, ``-L``, ``SPINEMU_PATH``, installed libraries; any
+  letter case with a warning);
 * ``:name`` labels are local to the previous plain label.
 """
 from __future__ import annotations
@@ -30,7 +34,11 @@ from ..frontend.ast import (
     AddrOf, Data, DatFile, Fit, Here, Instruction, LocalLabel, NameRef, ObjConst, Org, RegRef, Res, Str,
     key,
 )
+from ..diagnostics import Diagnostic
 from ..frontend.constants import Const, ConstError, NotConstant, evaluate, to_signed
+from ..frontend.objects import not_found_message
+from ..frontend.search import AmbiguousName
+from ..image import HUB_SIZE as HUB_BYTES
 
 __all__ = ["DatSymbol", "DatResult", "assemble_dat"]
 
@@ -223,10 +231,15 @@ class _Assembler:
     # ------------------------------------------------------------------ data
     def data(self, body: Data, cog_here: int, scope, emit: bool) -> bytearray:
         out = bytearray()
+        size = body.size
         for item in body.items:
-            size = item.size or body.size
-            if item.size and item.size > body.size:
-                pass  # OpenSpin accepts larger overrides: the item is just bigger
+            if item.size:
+                # an override holds for the rest of the line; it may not be smaller than the line's size
+                if item.size < body.size:
+                    self.report(msg.OVERRIDE_TOO_SMALL.format(size=_SIZE_WORDS[item.size],
+                                                              line=_SIZE_WORDS[body.size]), item)
+                    raise _Abort()
+                size = item.size
             count = 1
             if item.count is not None:
                 count = to_signed(self.const_now(item.count, cog_here, scope))
@@ -254,16 +267,34 @@ class _Assembler:
         return out
 
     def file_data(self, body: DatFile) -> bytes:
+        """The bytes of ``file "name"``, looked up as OBJ files are (frontend/search.py)."""
         if body.filename in self.file_cache:
             return self.file_cache[body.filename]
         here = os.path.dirname(os.path.abspath(self.unit.path))
-        path = os.path.join(here, body.filename)
+        search = self.unit.search
+        data = b""
         try:
-            with open(path, "rb") as fh:
-                data = fh.read()
-        except OSError:
-            self.report(msg.DAT_FILE_NOT_FOUND.format(name=body.filename, where=here), body)
-            data = b""
+            found = search.find(body.filename, here)
+        except AmbiguousName as exc:
+            self.report(msg.AMBIGUOUS_FILE.format(name=body.filename, folder=exc.folder,
+                                                  candidates=", ".join(exc.candidates)), body)
+            found = False
+        if found is None:
+            self.report(not_found_message(msg.DAT_FILE_NOT_FOUND, body.filename, search, here), body)
+        elif found:
+            if found.warning:
+                pos = body.pos
+                search.warnings.append(Diagnostic(found.warning, pos.path, pos.line, pos.col,
+                                                  self.unit.spin.source.line(pos.line), "warning"))
+            try:
+                with open(found.path, "rb") as fh:
+                    data = fh.read(HUB_BYTES + 1)   # more than the hub holds cannot fit in any image
+                if len(data) > HUB_BYTES:
+                    self.report(msg.DAT_FILE_TOO_BIG.format(name=body.filename, size=HUB_BYTES), body)
+                    data = b""
+            except OSError:
+                self.report(msg.DAT_FILE_NOT_FOUND.format(name=body.filename, where=found.path), body)
+                data = b""
         self.file_cache[body.filename] = data
         return data
 
@@ -326,6 +357,9 @@ class _Assembler:
 def _field(v: int) -> int:
     """An operand for pasm.encode: negative values pass as negatives (OpenSpin ORs them in)."""
     return to_signed(v)
+
+
+_SIZE_WORDS = {1: "byte", 2: "word", 4: "long"}
 
 
 def _align(hub: int, size: int, out) -> int:

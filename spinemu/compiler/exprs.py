@@ -4,8 +4,9 @@ What OpenSpin 1.00.81 does, and this module copies (observed with probes):
 
 * no constant folding of operators: ``3 + 4`` pushes 3, pushes 4, adds; only
   a literal, a constant name, ``obj#NAME``, a character, ``constant()``,
-  ``float()``, ``round()``, ``trunc()`` and ``-`` written directly before one
-  of those (``-5``, ``-K``, but not ``-(5)``) become one constant;
+  ``float()``, ``round()``, ``trunc()`` and ``-`` written directly before a
+  literal or a name (``-5``, ``-K``, but not ``-(5)``, ``-constant(5)`` or
+  ``-obj#K``, which negate at run time) become one constant;
 * constants: -1, 0, 1 have their own opcodes; values of the form
   ``2 << n`` (optionally minus 1, optionally inverted) use PUSH_MASK; other
   values use PUSH_IMM1..4, or the inverted value followed by BIT_NOT when
@@ -16,9 +17,12 @@ What OpenSpin 1.00.81 does, and this module copies (observed with probes):
 """
 from __future__ import annotations
 
+from contextlib import nullcontext
+
 from ..bytecode import BY_MNEMONIC, MATH_BY_SYMBOL, REGISTER_NAMES, encode_unsigned, mask_code
 from .. import messages as msg
 from ..frontend.ast import (
+    walk,
     Assign, Builtin, Call, Float, KConst, MemberRef, MemRef, NameRef, Number, ObjCall, ObjConst, Paren,
     Range, RegRef, ResultRef, SprRef, Str, Unary, key,
 )
@@ -86,6 +90,11 @@ def push_const_bytes(bits: int) -> bytes:
     return direct
 
 
+def _has_string(node) -> bool:
+    """Whether ``string(...)`` appears anywhere in ``node``."""
+    return any(type(n) is Builtin and n.name == "string" for n in walk(node))
+
+
 def _imm(v: int) -> bytes:
     n = 1 if v < 0x100 else 2 if v < 0x10000 else 3 if v < 0x1000000 else 4
     return bytes((0x37 + n,)) + v.to_bytes(n, "big")
@@ -93,6 +102,14 @@ def _imm(v: int) -> bytes:
 
 def _mem_op(access: int, size: int, base: str, indexed: bool) -> int:
     return 0x80 | (_SIZE_BITS[size] << 5) | (0x10 if indexed else 0) | (_BASE_BITS[base] << 2) | access
+
+
+def _table_index(index: int) -> int:
+    """A method or object table index for a CALL byte; past 255 the object has more methods and
+    object instances than a table holds, which is reported already: stop compiling this expression."""
+    if index > 0xFF:
+        raise CompileFailure()
+    return index
 
 
 class ExprCompiler:
@@ -123,12 +140,29 @@ class ExprCompiler:
         if t is ObjConst:
             return self.fold(node)
         if t is Builtin and node.name in _FOLDED_BUILTINS:
+            starter = getattr(node, "starter", None)
+            if starter is not None:
+                return self.fold_group(node, starter)
             return self.fold(node)
-        if t is Unary and node.op == "-" and not isinstance(node.operand, (Paren, Unary)):
+        if t is Unary and node.op == "-" and not isinstance(node.operand, (Paren, Unary, Builtin, ObjConst)):
             inner = self.constant_of(node.operand)
             if inner is not None:
                 return self.fold(node)
         return None
+
+    def fold_group(self, node, starter: str) -> Const:
+        """Fold a constant group begun by ``round(``/``trunc(``/``float(`` in code (frontend.builder)."""
+        try:
+            return evaluate(node, self.obj.resolve_const, self.obj.char_bytes)
+        except (NotConstant, ConstError) as exc:
+            bad = exc.node
+            what = getattr(bad, "name", None)
+            known = what is not None and (self.lookup(what) is not None or self.obj.has_method(what))
+            if isinstance(exc, NotConstant) or known:
+                self.error(msg.CONSTANT_GROUP.format(word=starter, what=f"'{what}'" if what else "this"), bad)
+            else:
+                self.error(exc.message, bad, getattr(exc, "name", None))
+        raise CompileFailure()
 
     def fold(self, node) -> Const:
         """Fold a constant expression or report why it is not one."""
@@ -316,7 +350,10 @@ class ExprCompiler:
             self.code.emit((0x40 | (0x20 if base == "LOC" else 0) | offset | access),
                            getattr(name_node, "name", "result"))
             return
-        self.code.emit(bytes((_mem_op(access, size, base, index is not None),)) + encode_unsigned(offset),
+        # Past $7FFF only a local at exactly $8000 (OpenSpin writes it as $80 $00, offset 0 on the chip)
+        # or an object already reported too big (VAR or DAT over 32 KB): keep 15 bits, as OpenSpin does.
+        operand = encode_unsigned(offset & 0x7FFF, force_long=offset > 0x7F)
+        self.code.emit(bytes((_mem_op(access, size, base, index is not None),)) + operand,
                        getattr(name_node, "name", "result"))
 
     def undefined(self, name: str, node) -> None:
@@ -342,17 +379,26 @@ class ExprCompiler:
 
     # ------------------------------------------------------------------ assignments
     def assign(self, node: Assign, push: bool) -> None:
-        self.expr(node.value)
-        if node.op == ":=":
-            if push:
-                self.var(node.target, USING)
-                self.code.emit(_WRITE | _PUSH_BIT, ":=")
-            else:
-                self.var(node.target, POP)
-            return
-        self.var(node.target, USING)
+        # when the target holds a string, its strings and the value's share the pool as
+        # OpenSpin allocates them (CodeBuffer.part)
+        context = self.code.new_context() if _has_string(node.target) else None
+        with self.string_part(context, "value"):
+            self.expr(node.value)
+        with self.string_part(context, "target"):
+            if node.op == ":=":
+                if push:
+                    self.var(node.target, USING)
+                    self.code.emit(_WRITE | _PUSH_BIT, ":=")
+                else:
+                    self.var(node.target, POP)
+                return
+            self.var(node.target, USING)
         op = MATH_BY_SYMBOL[(node.op, False)]
         self.code.emit(_MATH_BIT | (op.code & 0x1F) | (_PUSH_BIT if push else 0), node.op + "=")
+
+    def string_part(self, context, role: str):
+        """The strings compiled in the block are ``context``'s ``role`` (no context: nothing special)."""
+        return self.code.part(context, role) if context is not None else nullcontext()
 
     def step(self, node, where: str, push: bool) -> None:
         op = _PRE_POST[(where, node.op)]
@@ -377,7 +423,7 @@ class ExprCompiler:
             self.code.emit(frame, "frame")
             for a in node.args:
                 self.expr(a)
-            self.code.emit((_OP["CALL"], sym.index), f"call {node.name}")
+            self.code.emit((_OP["CALL"], _table_index(sym.index)), f"call {node.name}")
             return
         if isinstance(node, ObjCall):
             sym = self.obj.symbols.get(key(node.obj))
@@ -393,13 +439,19 @@ class ExprCompiler:
             index, nparams = target
             self.check_args(node.method, nparams, node.args, node)
             self.code.emit(frame, "frame")
-            for a in node.args:
-                self.expr(a)
+            # the index is compiled after the arguments: when it holds a string, the
+            # arguments' strings share the pool as in an assignment
+            context = self.code.new_context() if node.index is not None and _has_string(node.index) else None
+            with self.string_part(context, "value"):
+                for a in node.args:
+                    self.expr(a)
             if node.index is None:
-                self.code.emit((_OP["CALL_OBJ"], sym.index, index), f"call {node.obj}.{node.method}")
+                self.code.emit((_OP["CALL_OBJ"], _table_index(sym.index), _table_index(index)),
+                               f"call {node.obj}.{node.method}")
             else:
-                self.expr(node.index)
-                self.code.emit((_OP["CALL_OBJ_X"], sym.index, index), f"call {node.obj}[].{node.method}")
+                with self.string_part(context, "target"):
+                    self.expr(node.index)
+                self.code.emit((_OP["CALL_OBJ_X"], _table_index(sym.index), _table_index(index)), f"call {node.obj}[].{node.method}")
             return
         self.error(msg.NOT_A_METHOD.format(name="?"), node)
         raise CompileFailure()

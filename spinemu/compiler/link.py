@@ -133,8 +133,9 @@ def link(top, compiled: dict, errors: list):
         var_off = c.var_size
         for i, (_sym, child) in enumerate(c.instances):
             at = c.child_table + 4 * i
-            data[at:at + 2] = (addr[id(child)] - base).to_bytes(2, "little")
-            data[at + 2:at + 4] = var_off.to_bytes(2, "little")
+            # past $FFFF only in a program over 64 KB, which memory_check reports below
+            data[at:at + 2] = ((addr[id(child)] - base) & 0xFFFF).to_bytes(2, "little")
+            data[at + 2:at + 4] = (var_off & 0xFFFF).to_bytes(2, "little")
             var_off += total_var(compiled[id(child)], compiled)
         c.linked = bytes(data)
         image[base:base + len(data)] = data
@@ -150,7 +151,8 @@ def link(top, compiled: dict, errors: list):
     pcurr = HEADER_SIZE + first.offset
     dcurr = dbase + 4 + 4 * first.nparams + first.locals_size
     clkfreq, clkmode = clock_settings(top.unit, errors)
-    header = ImageHeader(clkfreq, clkmode, 0, HEADER_SIZE, vbase, dbase, pcurr, dcurr)
+    header = ImageHeader(clkfreq, clkmode, 0, HEADER_SIZE, vbase & 0xFFFF, dbase & 0xFFFF, pcurr & 0xFFFF,
+                         dcurr & 0xFFFF)       # too big for a word: memory_check reports the program too big
     image[0:HEADER_SIZE] = header.pack()
     image[5] = image_checksum(bytes(image))
     memory_check(top.unit, vbase, var_total, errors)

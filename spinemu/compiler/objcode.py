@@ -39,6 +39,8 @@ class MethodInfo:
     locals_size: int
     nparams: int
     pos: object
+    #: ``(name, frame offset, longs, "result" | "param" | "local")``, result first (debug info)
+    slots: list = field(default_factory=list)
 
 
 @dataclass
@@ -64,6 +66,16 @@ class CompiledObject:
     def child_table(self) -> int:
         """Offset of the first child entry in the table."""
         return 4 * (1 + self.n_methods)
+
+
+def _frame_slots(method, frame: dict) -> list:
+    """The named longs of ``method``'s frame (see MethodInfo.slots)."""
+    slots = [(method.result or "result", 0, 1, "result")]
+    first_local = 4 + 4 * len(method.params)
+    for sym in sorted(frame.values(), key=lambda s: s.offset):
+        if sym.offset:
+            slots.append((sym.name, sym.offset, sym.count, "param" if sym.offset < first_local else "local"))
+    return slots
 
 
 class ObjectCompiler:
@@ -155,6 +167,7 @@ class ObjectCompiler:
                 syms.methods.append(sym)
         instances = []
         index = len(methods) + 1
+        crossing = None         # the OBJ line that takes the table past 255 entries (OpenSpin reports it)
         for decl, child in self.unit.children:
             count = 1 if decl.count is None else self.count_of(decl.count)
             if not 1 <= count <= 255:
@@ -166,8 +179,10 @@ class ObjectCompiler:
             for _ in range(count):
                 instances.append((osym, child))
             index += count
+            if crossing is None and len(methods) + len(instances) > 255:
+                crossing = decl
         if len(methods) + len(instances) > 255:
-            self.error(msg.TOO_MANY_METHODS, spin.objs[-1] if spin.objs else methods[-1])
+            self.error(msg.TOO_MANY_METHODS, crossing or methods[-1])
         var_syms, var_size = layout_vars(spin.vars, self.count_of)
         if var_size > 0x8000:
             self.error(msg.TOO_MUCH_VAR, spin.vars[-1])
@@ -198,19 +213,21 @@ class ObjectCompiler:
                     self.error(msg.JUMP_TOO_FAR, sym.node)
                     mspans, end = [], offset
             infos.append(MethodInfo(sym.name, sym.index, sym.public, offset, end, mc.locals_size,
-                                    sym.nparams, sym.node.pos))
+                                    sym.nparams, sym.node.pos, _frame_slots(sym.node, mc.frame)))
             for s in mspans:
                 code_bytes += s.data
             spans.extend(mspans)
             offset = end
         size = (offset + 3) & ~3
         data = bytearray(size)
-        data[0:2] = size.to_bytes(2, "little")
-        data[2] = len(methods) + 1
-        data[3] = len(instances)
+        # A word past $FFFF (an object or a frame over 64 KB) is already an error (here, or in the
+        # memory check after linking); the table is made anyway, as the other errors are collected.
+        data[0:2] = (size & 0xFFFF).to_bytes(2, "little")
+        data[2] = (len(methods) + 1) & 0xFF
+        data[3] = len(instances) & 0xFF
         for i, info in enumerate(infos):
-            data[4 + 4 * i: 8 + 4 * i] = info.offset.to_bytes(2, "little") + \
-                info.locals_size.to_bytes(2, "little")
+            data[4 + 4 * i: 8 + 4 * i] = (info.offset & 0xFFFF).to_bytes(2, "little") + \
+                (info.locals_size & 0xFFFF).to_bytes(2, "little")
         data[table_size:table_size + len(dat.data)] = dat.data
         data[table_size + len(dat.data):offset] = code_bytes
         spans.insert(0, Span(0, bytes(data[:table_size]), None, "object table"))

@@ -16,6 +16,7 @@ from ..diagnostics import CompileError, Diagnostic
 from ..frontend.objects import load_program
 from ..frontend.source import SourceText
 from ..image import to_eeprom
+from .hints import program_hints
 from .link import link, total_var
 from .listing import format_listing
 from .objcode import ObjectCompiler
@@ -26,13 +27,18 @@ __all__ = ["compile_file", "compile_source", "CompiledProgram", "LineTable", "In
 class LineTable:
     """Hub address -> ``(path, line)`` of the Spin source that made the byte there.
 
-    Call it with an address (``table(0x28)``) or use :meth:`get`.
+    Call it with an address (``table(0x28)``) or use :meth:`get`;
+    :meth:`position` adds the column of the statement.
+
+    Args:
+        entries: ``(start, end, path, line)`` or ``(start, end, path, line, col)``.
     """
 
     def __init__(self, entries):
         entries = sorted(entries)
         self._starts = [e[0] for e in entries]
-        self._entries = entries
+        self._cols = [e[4] if len(e) > 4 else 1 for e in entries]
+        self._entries = [tuple(e[:4]) for e in entries]
 
     def __call__(self, addr: int):
         i = bisect.bisect_right(self._starts, addr) - 1
@@ -43,11 +49,21 @@ class LineTable:
 
     get = __call__
 
+    def position(self, addr: int):
+        """``(path, line, col)`` of the statement that made the byte at ``addr``, or ``None``."""
+        i = bisect.bisect_right(self._starts, addr) - 1
+        if i < 0:
+            return None
+        start, end, path, line = self._entries[i]
+        return (path, line, self._cols[i]) if start <= addr < end else None
+
     def __len__(self) -> int:
         return len(self._entries)
 
-    def items(self):
-        """``(start, end, path, line)`` ranges in address order."""
+    def items(self, columns: bool = False):
+        """``(start, end, path, line)`` ranges in address order (``columns``: with the column too)."""
+        if columns:
+            return [e + (col,) for e, col in zip(self._entries, self._cols)]
         return list(self._entries)
 
 
@@ -86,7 +102,8 @@ class CompiledProgram:
         binary: the ``.binary`` image (what OpenSpin writes with ``-b``).
         line_table: :class:`LineTable` from hub address to Spin source line.
         layout: the top object's :class:`InstanceLayout` (with its children).
-        warnings: diagnostics of severity "warning".
+        warnings: diagnostics of severity "warning": the compiler's hints (spinemu.compiler.hints),
+            things that compile but are rarely meant; they change no byte of the image.
         objects: the compiled objects in placement order.
     """
 
@@ -126,6 +143,17 @@ class CompiledProgram:
             for label, (offset, _size, _cog) in lay.dat.items():
                 out.setdefault((lay.pbase + offset) & 0xFFFF, f"'{label}' in {name}")
         return out
+
+    def debug_info(self):
+        """Names and places for tools that look into a running chip (:class:`spinemu.debuginfo.DebugInfo`).
+
+        Built from the compiler's own records on first use; the image is not touched.
+        """
+        info = getattr(self, "_debug_info", None)
+        if info is None:
+            from .debug import build_debug_info
+            info = self._debug_info = build_debug_info(self)
+        return info
 
     def listing(self, addresses: bool = True) -> str:
         """The listing: every object's bytes next to the source lines that made them.
@@ -180,10 +208,12 @@ def _compile_unit(top_unit) -> CompiledProgram:
         base = addr[id(c.unit)]
         for s in c.spans:
             if s.pos is not None and s.data:
-                entries.append((base + s.offset, base + s.offset + len(s.data), s.pos.path, s.pos.line))
+                entries.append((base + s.offset, base + s.offset + len(s.data), s.pos.path, s.pos.line,
+                                s.pos.col))
     vbase = int.from_bytes(image[8:10], "little")
     layout = _instance_layout(top, "", addr, vbase, compiled)
-    return CompiledProgram(image, LineTable(entries), layout, [], placed, addr)
+    warnings = list(top_unit.search.warnings) + program_hints(c.unit for c in compiled.values())
+    return CompiledProgram(image, LineTable(entries), layout, warnings, placed, addr)
 
 
 def _sorted(errors: list) -> list:
@@ -197,19 +227,24 @@ def _sorted(errors: list) -> list:
     return out
 
 
-def compile_file(path: str, include_dirs=(), defines=()) -> CompiledProgram:
+def compile_file(path: str, include_dirs=(), defines=(), search=None) -> CompiledProgram:
     """Compile a Spin program (top object ``path``) to a Propeller image.
 
     Args:
         path: the top object's .spin file.
-        include_dirs: more folders to look for OBJ files in (after the source's folder).
+        include_dirs: more folders to look for OBJ and ``file`` names in (after the source's
+            folder; then come the ``SPINEMU_PATH`` folders and the installed tools' libraries).
         defines: names defined for ``#ifdef`` in every file (OpenSpin's ``-D``).
+        search: a :class:`spinemu.frontend.search.SearchPath` to use instead (``include_dirs``
+            is then ignored).
 
     Raises:
         ParseError: syntax errors.
         CompileError: anything else wrong (unknown names, missing objects, ...).
+
+    A name found only in another letter case is used with a warning (``prog.warnings``).
     """
-    return _compile_unit(load_program(os.fspath(path), include_dirs, defines=defines))
+    return _compile_unit(load_program(os.fspath(path), include_dirs, defines=defines, search=search))
 
 
 def compile_source(text: str, name: str = "main.spin", include_dirs=(),

@@ -59,6 +59,11 @@ class MethodCompiler(ExprCompiler):
         self.code = CodeBuffer()
         self.frame, self.locals_size = frame_locals(method, obj.count_of, self.check_local)
         self.loops: list[_Loop] = []
+        for local in method.locals:     # OpenSpin: no local may reach past offset $8000 of the frame
+            sym = self.frame.get(key(local.name))
+            if sym is not None and sym.offset + 4 * (sym.count - 1) > 0x8000:
+                obj.error(msg.LOCALS_TOO_BIG, local.count if local.count is not None else local)
+                break
 
     def check_local(self, name, pos, frame) -> bool:
         """A parameter or local must not reuse a name of the object or of the method."""
@@ -174,6 +179,9 @@ class MethodCompiler(ExprCompiler):
 
     # ------------------------------------------------------------------ case
     def s_Case(self, node: Case) -> None:
+        if not node.items:      # OpenSpin: "No cases encountered" (at the statement after the case)
+            self.error(msg.CASE_WITHOUT_MATCH, node)
+            return
         code = self.code
         end = Label("case end")
         code.push_address(end, "case end")
@@ -273,6 +281,7 @@ class MethodCompiler(ExprCompiler):
             code.pos = node.pos
             self.jmp(top, "repeat")
         else:
+            nxt.late = True         # OpenSpin sizes jumps to it one byte more generously (code.py)
             code.mark(top)
             self.loop_body(node.body, _Loop(nxt, end))
             code.mark(nxt)

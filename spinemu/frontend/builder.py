@@ -24,6 +24,16 @@ _ASSIGN_TO_BINARY = {
     "===": "==", "<>=": "<>", "=<=": "=<", "=>=": "=>", "<=": "<", ">=": ">",
 }
 _WORD_OPS = {"and": "AND", "or": "OR", "not": "NOT"}
+#: precedence level of each binary operator (Propeller Manual table 2-9; lower binds tighter)
+_LEVEL = {
+    "->": 3, "<-": 3, ">>": 3, "<<": 3, "~>": 3, "><": 3, "&": 4, "|": 5, "^": 5,
+    "*": 6, "**": 6, "/": 6, "//": 6, "+": 7, "-": 7, "#>": 8, "<#": 8,
+    "==": 9, "<>": 9, "<": 9, ">": 9, "=<": 9, "=>": 9, "AND": 11, "OR": 12,
+}
+#: NOT's operand takes the operators of these levels that follow it
+_NOT_OPERAND_LEVEL = 9
+#: in method code, these start a constant expression that takes the rest of the expression
+_CONSTANT_STARTERS = ("float", "round", "trunc")
 
 
 def parse_number(text: str) -> int:
@@ -31,6 +41,10 @@ def parse_number(text: str) -> int:
 
     >>> parse_number("$7F"), parse_number("%10_10"), parse_number("%%13"), parse_number("1_000")
     (127, 10, 7, 1000)
+
+    A decimal literal of more than 40 digits is far past 32 bits whatever its
+    digits are: it reads as ``2**160`` (Python refuses to convert decimal text
+    longer than 4,300 digits), and the constant folder reports it as too big.
     """
     t = text.replace("_", "")
     if t.startswith("$"):
@@ -39,6 +53,8 @@ def parse_number(text: str) -> int:
         return int(t[2:], 4)
     if t.startswith("%"):
         return int(t[1:], 2)
+    if len(t.lstrip("0")) > 40:
+        return 1 << 160
     return int(t)
 
 
@@ -51,6 +67,9 @@ class AstBuilder:
 
     def __init__(self, path: str):
         self.path = path
+        #: building method code (not CON/DAT): round/trunc/float start constant groups
+        self.in_code = False
+        self._groups: set = set()
 
     def pos(self, item) -> Pos:
         if isinstance(item, Token):
@@ -195,7 +214,47 @@ class AstBuilder:
         return Assign(ch[0].pos, op, ch[0], ch[2])
 
     def binop(self, ch):
-        return Binary(ch[0].pos, _op_text(ch[1]), ch[0], ch[2])
+        op = _op_text(ch[1])
+        return self._attach(ch[0], op, ch[2]) or Binary(ch[0].pos, op, ch[0], ch[2])
+
+    def _attach(self, node, op: str, right):
+        """``node op right`` when an open operand at the right end of ``node`` takes ``op``, else None.
+
+        The grammar binds by the usual precedence; OpenSpin differs in two
+        places, both of which reach to the right over the operators that follow:
+
+        * ``NOT`` stands wherever a term may and its operand is everything of
+          comparison level or tighter after it: ``x + NOT y + z`` is
+          ``x + NOT (y + z)``, ``NOT a == b`` is ``NOT (a == b)``;
+        * in method code, ``float(``, ``round(`` and ``trunc(`` start a
+          constant expression that takes every operator and operand after it
+          up to the end of the enclosing expression: ``x * round(1.5) + 2`` is
+          ``x * constant(round(1.5) + 2)`` (and ``round(1.5) + x`` is an error,
+          ``x`` not being a constant).  The group becomes a ``constant()``
+          whose ``starter`` attribute names the word that began it.
+        """
+        t = type(node)
+        if t is Binary:
+            inner = self._attach(node.right, op, right)
+            return None if inner is None else Binary(node.pos, node.op, node.left, inner)
+        if t is Unary:
+            inner = self._attach(node.operand, op, right)
+            if inner is not None:
+                return Unary(node.pos, node.op, inner)
+            if node.op == "NOT" and _LEVEL[op] <= _NOT_OPERAND_LEVEL:
+                return Unary(node.pos, "NOT", Binary(node.operand.pos, op, node.operand, right))
+            return None
+        if t is Builtin and self.in_code:
+            if id(node) in self._groups:
+                group = Builtin(node.pos, "constant", [Binary(node.pos, op, node.args[0], right)])
+            elif node.name in _CONSTANT_STARTERS and node.args:
+                group = Builtin(node.pos, "constant", [Binary(node.pos, op, node, right)])
+            else:
+                return None
+            group.starter = getattr(node, "starter", node.name)   # for the back ends' messages
+            self._groups.add(id(group))
+            return group
+        return None
 
     def unop(self, ch):
         return Unary(self.pos(ch[0]), _op_text(ch[0]), ch[1])
@@ -342,10 +401,11 @@ class AstBuilder:
 
     def data_item(self, ch):
         size = None
+        pos = self.pos(ch[0])           # the size override when there is one (errors point at it)
         if isinstance(ch[0], Token) and ch[0].type == "SIZE":
             size, ch = SIZES[ch[0].value.lower()], ch[1:]
         count = ch[2] if len(ch) > 1 else None
-        return DataItem(ch[0].pos, size, ch[0], count)
+        return DataItem(pos, size, ch[0], count)
 
     def org(self, ch):
         return Org(self.pos(ch[0]), ch[1] if len(ch) > 1 else None)

@@ -6,11 +6,14 @@ bits; floating-point operators round to single precision after every step.
 Facts observed on OpenSpin 1.00.81 (probe programs, tests/data/compiler):
 
 * comparisons, AND, OR, NOT give -1/0 on integers but 1.0/0.0 on floats;
-* ``**`` on constants is the *unsigned* high half of the product;
+* ``**`` on constants is the *unsigned* high half of the product, except that
+  OpenSpin loses a carry when the two middle 16x16 products overflow 32 bits;
 * ``/`` and ``//`` truncate toward zero; division by zero is an error;
-* ``x >< n`` reverses the low ``n`` bits (``n`` = 0 gives 0, 32 all bits);
+* ``x >< n`` reverses the low ``n`` bits (``n`` = 0 gives 0, 32 all bits); the
+  count is ``n & $FF``, and past 32 the sign bit of ``x`` fills in from the right;
 * ``^^`` of a negative integer is 0;
-* ``round(x)`` is ``floor(x + 0.5)``, ``trunc`` rounds toward zero; both give
+* ``round(x)`` is ``x + 0.5`` (in single precision) rounded toward zero, so
+  ``round(-680.0)`` is -679; ``trunc`` rounds toward zero; both give
   NEGX ($8000_0000) when the result does not fit;
 * integers and floats cannot be mixed; the bit operators refuse floats.
 """
@@ -99,10 +102,27 @@ _FLOAT_UNARY_OK = {"-", "||", "^^", "NOT", "+"}
 
 
 def _reverse(value: int, bits: int) -> int:
-    if bits <= 0:
-        return 0
-    r = int(f"{value & MASK:032b}"[::-1], 2)
-    return (r >> (32 - bits)) & MASK if bits <= 32 else r
+    """``value >< bits`` as OpenSpin folds it: ``bits & $FF`` times, shift the low bit of
+    ``value`` into the result and ``value`` right arithmetically (so past 32 the result
+    fills with sign bits; 0, 256, ... give 0)."""
+    n = bits & 0xFF
+    if n <= 32:
+        return int(f"{value & MASK:032b}"[::-1], 2) >> (32 - n) if n else 0
+    v = to_signed(value)
+    r = 0
+    for _ in range(n):
+        r = ((r << 1) | (v & 1)) & MASK
+        v >>= 1
+    return r
+
+
+def _multiply_high(a: int, b: int) -> int:
+    """``a ** b`` as OpenSpin folds it: the high long of the unsigned 64-bit product, built
+    from 16-bit halves, where the sum of the two middle products drops its carry out of
+    bit 31 (so ``$FFFF_FFFF ** $FFFF_FFFF`` is ``$FFFE_FFFE``, not ``$FFFF_FFFE``)."""
+    al, ah, bl, bh = a & 0xFFFF, a >> 16, b & 0xFFFF, b >> 16
+    middle = (ah * bl + al * bh) & MASK
+    return ah * bh + (middle >> 16) + (((middle & 0xFFFF) + ((al * bl) >> 16)) >> 16)
 
 
 def _int_binary(op: str, a: int, b: int, node) -> int:
@@ -114,7 +134,7 @@ def _int_binary(op: str, a: int, b: int, node) -> int:
     if op == "*":
         return sa * sb
     if op == "**":
-        return (a * b) >> 32
+        return _multiply_high(a, b)
     if op in ("/", "//"):
         if sb == 0:
             raise ConstError(msg.DIVIDE_BY_ZERO, node)
@@ -210,6 +230,10 @@ def _float_unary(op: str, a: int) -> Const:
     raise AssertionError(op)
 
 
+def _toward_zero(f: float) -> float:
+    return float(math.trunc(f)) if math.isfinite(f) else f
+
+
 def _to_int(f: float) -> int:
     if math.isnan(f) or not -2147483648.0 <= f < 2147483648.0:
         return NEGX
@@ -247,7 +271,8 @@ class _Folder:
         t = type(node)
         if t is Number:
             if node.value > MASK:
-                raise ConstError(msg.CONSTANT_TOO_BIG.format(value=node.text), node)
+                text = node.text if len(node.text) <= 40 else node.text[:20] + "..." + node.text[-4:]
+                raise ConstError(msg.CONSTANT_TOO_BIG.format(value=text), node)
             return Const(node.value)
         if t is Float:
             return Const(float_bits(node.value), True)
@@ -306,8 +331,8 @@ class _Folder:
             raise ConstError(msg.INTEGER_AND_FLOAT, node.args[0])
         f = bits_float(a.bits)
         if name == "round":
-            return Const(_to_int(math.floor(bits_float(float_bits(f + 0.5)))))
-        return Const(_to_int(math.trunc(f) if math.isfinite(f) else f))
+            return Const(_to_int(_toward_zero(bits_float(float_bits(f + 0.5)))))
+        return Const(_to_int(_toward_zero(f)))
 
 
 def encode_clock(mode: int) -> Optional[int]:

@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 
 from ..diagnostics import Diagnostic
 from .. import messages as msg
+from ..diagnostics import split_lines
 
 __all__ = ["Token", "Line", "Section", "Comment", "LexedFile", "tokenize", "KEYWORDS",
            "PASM_MNEMONICS", "PASM_CONDITIONS", "DESIGNATORS"]
@@ -201,7 +202,7 @@ _BRACE_RE = re.compile(r"[{}]")
 class _Lexer:
     def __init__(self, text: str, path: str, eof=None):
         self.text = text
-        lines = text.splitlines()
+        lines = split_lines(text)
         self.eof = eof or (len(lines) + 1, 1)
         self.path = path
         self.sections: list[Section] = [Section("CON", 1)]
@@ -212,6 +213,7 @@ class _Lexer:
         self.tokens: list[Token] = []   # the logical line being built
         self.line_indent = 0
         self.dat_state = 0              # DAT: 0 line start, 1 after label, 2 after condition, 3 operands
+        self._lines = None              # the text's lines, split once on the first error
 
     # -- helpers
     def error(self, message: str, line: int, col: int, length: int = 1) -> None:
@@ -219,7 +221,9 @@ class _Lexer:
         self.errors.append(Diagnostic(message, self.path, line, col, src, "error", length))
 
     def _source_line(self, line: int):
-        lines = self.text.splitlines()
+        if self._lines is None:
+            self._lines = split_lines(self.text)
+        lines = self._lines
         return lines[line - 1] if 1 <= line <= len(lines) else None
 
     def _indent_of(self, pos: int) -> int:
@@ -332,7 +336,8 @@ class _Lexer:
             m = match(text, pos)
             if m is None:
                 ch = text[pos]
-                self.error(msg.BAD_CHARACTER.format(ch=ch), self.line, pos - self.line_start + 1)
+                shown = f"'{ch}'" if ch.isprintable() else f"U+{ord(ch):04X}"    # NUL, ^Z: say which
+                self.error(msg.BAD_CHARACTER.format(ch=shown), self.line, pos - self.line_start + 1)
                 pos += 1
                 continue
             kind = m.lastgroup

@@ -2,13 +2,18 @@
 
 An object is a .spin file.  ``OBJ`` lines name child objects; a name without
 an extension gets ``.spin``; the file is looked up next to the file that
-names it, then in the include directories (OpenSpin's ``-L``), in order.
-Each file is read and parsed once, however many times it is used.
+names it, then in the include directories (OpenSpin's ``-L``), ``SPINEMU_PATH``
+and the installed tools' library folders, exactly first and then in any
+letter case (with a warning): see search.py.  Each file is read and parsed
+once, however many times it is used.
 
 CON values (Propeller Manual, CON): ``name = expr`` and enumerations
 (``#start``, ``name``, ``name[skip]``).  The counter starts at 0 in each CON
-section and continues across its lines; definitions may refer to constants
-defined further down and to children's constants (``obj#NAME``).
+section and continues across its lines; definitions may refer to children's
+constants (``obj#NAME``) and to constants defined further down, as far as
+OpenSpin's two passes over the lines allow: ``A = B`` before ``B = 1`` works,
+``A = B`` before ``B = C`` before ``C = 1`` does not, and neither does ``A = B``
+before ``B = obj#C`` (the first pass does not see the children's constants).
 """
 from __future__ import annotations
 
@@ -20,10 +25,13 @@ from ..diagnostics import CompileError, Diagnostic, ParseError
 from .. import messages as msg
 from .ast import ConEnumName, ConEnumStart, NameRef, ObjConst, SpinFile, key
 from .constants import Const, ConstError, NotConstant, evaluate
+from .obj_shadow import shadowed_object_hints
 from .parser import parse_text
+from .search import ENV_VAR, AmbiguousName, SearchPath, standard_object
 from .source import read_source
 
-__all__ = ["ObjectUnit", "load_program", "resolve_object_file", "ConstantTable", "child_constant"]
+__all__ = ["ObjectUnit", "load_program", "resolve_object_file", "ConstantTable", "child_constant",
+           "not_found_message"]
 
 
 @dataclass
@@ -46,6 +54,10 @@ class ObjectUnit:
     children: list = field(default_factory=list)   # [(ObjDecl, ObjectUnit)]
     constants: ConstantTable = field(default_factory=ConstantTable)
     child_by_name: dict = field(default_factory=dict)
+    hints: list = field(default_factory=list)       # Diagnostics about its OBJ lines (obj_shadow.py)
+    #: where this program's OBJ and ``file`` names are looked up (shared by its units);
+    #: its ``warnings`` collect the program's warnings
+    search: SearchPath = field(default_factory=lambda: SearchPath(environ={}, standard=False))
 
     @property
     def name(self) -> str:
@@ -53,18 +65,33 @@ class ObjectUnit:
 
 
 def resolve_object_file(name: str, from_dir: str, include_dirs=()) -> Optional[str]:
-    """The path of object file ``name`` (``.spin`` added if missing), or ``None``."""
-    fname = name if name.lower().endswith(".spin") else name + ".spin"
-    for d in (from_dir, *include_dirs):
-        cand = os.path.join(d, fname)
-        if os.path.isfile(cand):
-            return cand
-    return None
+    """The path of object file ``name`` (``.spin`` added if missing) in ``from_dir`` or ``include_dirs``, or ``None``.
+
+    Only exact names, no environment, no installed libraries: :class:`SearchPath` does the full lookup.
+    """
+    try:
+        found = SearchPath(list(include_dirs), environ={}, standard=False).find(_spin_name(name), from_dir)
+    except AmbiguousName:
+        return None
+    return found.path if found and found.warning is None else None
+
+
+def _spin_name(name: str) -> str:
+    return name if name.lower().endswith(".spin") else name + ".spin"
+
+
+def not_found_message(template: str, name: str, search: SearchPath, from_dir: str) -> str:
+    """The "cannot find" message: every folder looked in and, for a Propeller Tool object, where it comes from."""
+    text = template.format(name=name, where=search.describe(from_dir))
+    standard = standard_object(name)
+    if standard is not None:
+        text += "; " + msg.STANDARD_OBJECT_HINT.format(name=standard, var=ENV_VAR)
+    return text
 
 
 class _Loader:
-    def __init__(self, include_dirs, defines=()):
-        self.include_dirs = list(include_dirs)
+    def __init__(self, search: SearchPath, defines=()):
+        self.search = search
         self.defines = tuple(defines)
         self.units: dict[str, ObjectUnit] = {}
         self.errors: list[Diagnostic] = []
@@ -79,7 +106,7 @@ class _Loader:
         spin, errors = parse_text(source, self.defines)
         self.errors.extend(errors)
         self.syntax_errors += len(errors)
-        unit = ObjectUnit(path, spin)
+        unit = ObjectUnit(path, spin, search=self.search)
         self.units[real] = unit
         self.stack.append(real)
         here = os.path.dirname(os.path.abspath(path))
@@ -89,14 +116,15 @@ class _Loader:
                 self._error(msg.DUPLICATE.format(name=decl.name, line=seen[key(decl.name)]), decl, spin)
                 continue
             seen[key(decl.name)] = decl.pos.line
-            child_path = resolve_object_file(decl.filename, here, self.include_dirs)
+            child_path = self._find(decl, here, spin)
             if child_path is None:
-                where = ", ".join([here] + self.include_dirs)
-                self._error(msg.OBJECT_NOT_FOUND.format(name=decl.filename, where=where), decl, spin)
                 continue
             if os.path.realpath(child_path) in self.stack:
                 self._error(msg.OBJECT_RECURSION.format(name=decl.filename), decl, spin)
                 continue
+            unit.hints.extend(shadowed_object_hints(decl, child_path, here,
+                                                    [f.path for f in self.search.folders(here)[1:]],
+                                                    spin.source))
             child = self.load(child_path)
             if child is not None:
                 unit.children.append((decl, child))
@@ -104,6 +132,25 @@ class _Loader:
         self.stack.pop()
         _fold_constants(unit, self.errors)
         return unit
+
+    def _find(self, decl, here: str, spin: SpinFile) -> Optional[str]:
+        """The file of OBJ line ``decl``, reporting it missing or ambiguous, warning about its case."""
+        try:
+            found = self.search.find(_spin_name(decl.filename), here)
+        except AmbiguousName as exc:
+            self._error(msg.AMBIGUOUS_FILE.format(name=decl.filename, folder=exc.folder,
+                                                  candidates=", ".join(exc.candidates)), decl, spin)
+            return None
+        if found is None:
+            self._error(not_found_message(msg.OBJECT_NOT_FOUND, decl.filename, self.search, here), decl, spin)
+            return None
+        if found.warning:
+            self.search.warnings.append(self._diagnostic(found.warning, decl, spin, "warning"))
+        return found.path
+
+    def _diagnostic(self, text: str, node, spin: SpinFile, severity: str) -> Diagnostic:
+        pos = node.pos
+        return Diagnostic(text, pos.path, pos.line, pos.col, spin.source.line(pos.line), severity)
 
     def _error(self, text: str, node, spin: SpinFile) -> None:
         pos = node.pos
@@ -135,6 +182,8 @@ def _fold_constants(unit: ObjectUnit, errors: list) -> None:
             pending_undefined.setdefault(id(node), node)
             raise NotConstant(node)
         if isinstance(node, ObjConst):
+            if first_pass[0]:
+                raise NotConstant(node)     # OpenSpin's first pass does not see children's constants
             return child_constant(unit, node)
         raise NotConstant(node)
 
@@ -143,9 +192,11 @@ def _fold_constants(unit: ObjectUnit, errors: list) -> None:
     items = _con_items_by_section(spin)
     done: set = set()
     reported: set = set()
-    progress = True
-    while progress:
-        progress = False
+    # OpenSpin reads the CON lines twice, in order: a constant may use one defined further
+    # down only if that one is known by the end of the first pass
+    first_pass = [True]
+    for pass_no in range(2):
+        first_pass[0] = pass_no == 0
         pending_undefined.clear()
         counter: Optional[int] = 0
         section = None
@@ -175,7 +226,8 @@ def _fold_constants(unit: ObjectUnit, errors: list) -> None:
                         _report(errors, spin, exc.node, exc.message, reported)
                         step = None
                 if id(item) not in done and counter is not None:
-                    progress |= _define(table, item.name, Const(counter & 0xFFFFFFFF), item, errors, spin, reported)
+                    _define(table, item.name, Const(counter & 0xFFFFFFFF), item, errors, spin, reported,
+                            not first_pass[0])
                     done.add(id(item))
                 counter = None if counter is None or step is None else counter + step
                 continue
@@ -189,11 +241,14 @@ def _fold_constants(unit: ObjectUnit, errors: list) -> None:
                 _report(errors, spin, exc.node, exc.message, reported)
                 done.add(id(item))
                 continue
-            _define(table, item.name, value, item, errors, spin, reported)
+            _define(table, item.name, value, item, errors, spin, reported, not first_pass[0])
             done.add(id(item))
-            progress = True
     for node in pending_undefined.values():
-        _report(errors, spin, node, msg.UNDEFINED.format(name=node.name), reported)
+        if key(node.name) in table:
+            text = msg.CONSTANT_TOO_LATE.format(name=node.name)
+        else:
+            text = msg.UNDEFINED.format(name=node.name)
+        _report(errors, spin, node, text, reported)
 
 
 def _con_items_by_section(spin: SpinFile) -> list:
@@ -209,9 +264,13 @@ def _con_items_by_section(spin: SpinFile) -> list:
     return out
 
 
-def _define(table, name, value, node, errors, spin, reported) -> bool:
+def _define(table, name, value, node, errors, spin, reported, second_pass: bool = False) -> bool:
+    """Enter constant ``name``; a name defined twice is an error, except (as in OpenSpin) when the
+    second pass meets it again with the value it already has (``cols = vga#cols`` on two lines)."""
     k = key(name)
     if k in table:
+        if second_pass and table[k][0] == value:
+            return False
         prev = table[k][1]
         _report(errors, spin, node, msg.DUPLICATE.format(name=name, line=prev.pos.line), reported)
         return False
@@ -228,18 +287,21 @@ def _report(errors, spin, node, text, reported) -> None:
     errors.append(Diagnostic(text, pos.path, pos.line, pos.col, spin.source.line(pos.line)))
 
 
-def load_program(path: str, include_dirs=(), source=None, defines=()) -> ObjectUnit:
+def load_program(path: str, include_dirs=(), source=None, defines=(), search: Optional[SearchPath] = None) -> ObjectUnit:
     """Load, parse and fold the constants of the object tree rooted at ``path``.
 
     Args:
         source: the top file's SourceText, if it is not to be read from ``path``
             (``path`` still decides where its OBJ files are looked for).
+        search: where OBJ and ``file`` names are looked up; by default ``include_dirs``,
+            then ``SPINEMU_PATH`` and the installed tools' library folders.  Warnings
+            (names found in another letter case) end up in ``unit.search.warnings``.
 
     Raises:
         ParseError: syntax errors (of every file).
         CompileError: missing object files, bad or unknown constants.
     """
-    loader = _Loader(include_dirs, defines)
+    loader = _Loader(search if search is not None else SearchPath(list(include_dirs)), defines)
     unit = loader.load(path, source)
     if loader.errors:
         cls = ParseError if loader.syntax_errors else CompileError

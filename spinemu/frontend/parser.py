@@ -13,6 +13,7 @@ from .ast import SpinFile
 from .builder import AstBuilder
 from .lalr import Parser, ParseFailure, load_tables
 from .layout import layout
+from .limits import MAX_BLOCK_DEPTH, MAX_EXPRESSION_DEPTH, block_nesting_errors, expression_depth_error
 from .lexer import TAB_WIDTH, Token, tokenize, KEYWORDS, _OPERATORS
 from .preprocess import preprocess
 from .source import SourceText, read_source
@@ -26,6 +27,8 @@ for _spelling, _type in _OPERATORS.items():
         _OP_SPELLING.setdefault(_type, _spelling)
 _KEYWORD_SPELLING = {t: w for w, t in KEYWORDS.items() if t == w.upper()}
 _START = {"CON": "con_line", "VAR": "var_line", "OBJ": "obj_line", "DAT": "dat_line"}
+#: tokens that open a block (limits.py); a method with fewer than ten cannot nest ten deep
+_BLOCK_TOKENS = frozenset({"IF", "IFNOT", "REPEAT", "CASE", "LOOKUP"})
 
 
 def _get_tables():
@@ -107,6 +110,18 @@ def _failure(exc: ParseFailure, source: SourceText, start: str, tokens: list) ->
     return Diagnostic(text, source.path, tok.line, tok.col, source.line(tok.line), "error", length)
 
 
+def _longest_line(tokens) -> int:
+    """Most tokens on one line of ``tokens`` (an expression is never deeper than its token count)."""
+    longest = count = 0
+    line = None
+    for tok in tokens:
+        if tok.line != line:
+            line, count = tok.line, 0
+        count += 1
+        longest = max(longest, count)
+    return longest
+
+
 def parse_text(source: SourceText, defines=()) -> tuple[SpinFile, list]:
     """Parse ``source``; returns the file and the list of error diagnostics (maybe empty).
 
@@ -120,7 +135,8 @@ def parse_text(source: SourceText, defines=()) -> tuple[SpinFile, list]:
     if not source.text.strip():
         errors.append(Diagnostic(msg.EMPTY_FILE, source.path))
     spin = SpinFile(source.path, source, comments=lexed.comments)
-    parser = Parser(_get_tables(), AstBuilder(source.path))
+    builder = AstBuilder(source.path)
+    parser = Parser(_get_tables(), builder)
 
     def indent_at(tok) -> int:
         text = source.line(tok.line) or ""
@@ -130,11 +146,21 @@ def parse_text(source: SourceText, defines=()) -> tuple[SpinFile, list]:
         return col
 
     def run(tokens, start):
+        builder.in_code = start == "method"
         try:
-            return parser.parse(tokens, start)
+            node = parser.parse(tokens, start)
         except ParseFailure as exc:
             errors.append(_failure(exc, source, start, tokens))
             return None
+        opening = sum(1 for t in tokens if t.type in _BLOCK_TOKENS) if start == "method" else 0
+        problems = block_nesting_errors(node) if opening > MAX_BLOCK_DEPTH else []
+        if _longest_line(tokens) > MAX_EXPRESSION_DEPTH:
+            deep = expression_depth_error(node)
+            problems += [deep] if deep else []
+        for text_, where in problems:
+            errors.append(Diagnostic(text_, source.path, where.pos.line, where.pos.col,
+                                     source.line(where.pos.line)))
+        return node if not problems else None
 
     for section in lexed.sections:
         spin.sections.append((section.kind, section.line))
@@ -172,7 +198,8 @@ def parse_text(source: SourceText, defines=()) -> tuple[SpinFile, list]:
                 spin.dat.append(node)
     # a line with a lexical error gets no syntax error on top of it
     bad_lines = {d.line for d in lexed.errors}
-    errors = [d for d in errors if d in lexed.errors or d.line not in bad_lines]
+    lexical = {id(d) for d in lexed.errors}            # by identity: thousands of errors must not go quadratic
+    errors = [d for d in errors if id(d) in lexical or d.line not in bad_lines]
     errors.sort(key=lambda d: (d.line or 0, d.column or 0))
     return spin, errors
 

@@ -11,10 +11,10 @@ import os
 from dataclasses import dataclass, field
 from typing import NamedTuple, Optional
 
-from ..diagnostics import ParseError
+from ..diagnostics import ParseError, split_lines
 from .. import messages as msg
 
-__all__ = ["SourceText", "Pos", "decode_source", "read_source", "utf16_char_byte"]
+__all__ = ["SourceText", "Pos", "decode_source", "read_source", "utf16_char_byte", "split_lines"]
 
 # How OpenSpin 1.00.81 turns a character of a UTF-16 source into a byte (in
 # strings and DAT data).  Observed by compiling every BMP character in a
@@ -86,7 +86,7 @@ class SourceText:
     _lines: Optional[list] = field(default=None, repr=False)
 
     def __post_init__(self):
-        lines = self.text.splitlines()
+        lines = split_lines(self.text)
         if self.text.endswith(("\n", "\r")) or not lines:
             self.eof = (len(lines) + 1, 1)
         else:
@@ -97,7 +97,7 @@ class SourceText:
     def line(self, number: int) -> Optional[str]:
         """The 1-based line ``number`` without its line ending (or ``None``)."""
         if self._lines is None:
-            self._lines = self.text.splitlines()
+            self._lines = split_lines(self.text)
         if 1 <= number <= len(self._lines):
             return self._lines[number - 1]
         return None
@@ -151,6 +151,9 @@ def read_source(path: str) -> SourceText:
     Raises:
         ParseError: if the file cannot be read.
     """
+    if os.path.exists(path) and not os.path.isfile(path) and not os.path.isdir(path):
+        # a device or a FIFO: /dev/zero would never end, a FIFO would wait for a writer
+        raise ParseError(msg.CANNOT_READ.format(reason="not a regular file"), path=path)
     try:
         with open(path, "rb") as fh:
             data = fh.read()

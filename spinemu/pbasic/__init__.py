@@ -13,8 +13,9 @@ Parallax's own tokenizer (docs/pbasic.md).
 >>> res.reason, res.var("x"), res.trace.pin_levels(4)
 ('end', 0, [(0, 'z'), (0, '1'), (2000, '0')])
 
-This package is self-contained: it shares only :mod:`spinemu.diagnostics`
-and :mod:`spinemu.trace` with the rest of spinemu.
+This package is self-contained: it shares only :mod:`spinemu.diagnostics`,
+:mod:`spinemu.trace` and the bench (:mod:`spinemu.bench`: input levels,
+parts on the pins, serial framing) with the rest of spinemu.
 """
 from __future__ import annotations
 
@@ -23,12 +24,12 @@ from typing import Optional, Union
 from .compiler import Program, compile_program
 from .interp import RunResult, run_program
 from .machine import CLOCK_HZ
-from .stimulus import PinStimulus, parse_input_spec
+from ..bench.inputs import parse_input_spec
 from .syntax import parse_source, read_source
 from .timing import Timing, get_timing
 
 __all__ = ["compile_file", "compile_source", "run_file", "Program", "RunResult", "CLOCK_HZ",
-           "Timing", "get_timing", "PinStimulus", "parse_input_spec"]
+           "Timing", "get_timing", "parse_input_spec"]
 
 
 def compile_source(text: str, path: str = "<input>") -> Program:
@@ -52,7 +53,7 @@ def run_file(program: Union[str, "Program"], *, seconds: Optional[float] = None,
              serial_in: Optional[dict] = None, float_level: int = 0,
              gosub_model: str = "ring", end_glitch: bool = False,
              max_instructions: Optional[int] = None,
-             initial_ram: Optional[bytes] = None) -> RunResult:
+             initial_ram: Optional[bytes] = None, parts=()) -> RunResult:
     """Compile (if given a path) and run a BS2 program.
 
     Args:
@@ -73,6 +74,9 @@ def run_file(program: Union[str, "Program"], *, seconds: Optional[float] = None,
         max_instructions: stop after this many instructions (default 5,000,000).
         initial_ram: for experiments, 32 bytes whose words 3-15 (the user RAM)
             replace the zeros a real BS2 starts with.
+        parts: bench parts on the pins (a :class:`spinemu.bench.Bench` or a
+            list of parts), the same as on the Propeller; they read and
+            drive P0..P15 (1 cycle = 1 us).
 
     Returns:
         RunResult: trace, DEBUG text, SEROUT bytes, warnings, RAM, EEPROM...
@@ -85,4 +89,4 @@ def run_file(program: Union[str, "Program"], *, seconds: Optional[float] = None,
     return run_program(prog, seconds=seconds, cycles=cycles, timing=timing, inputs=inputs,
                        debug_in=debug_in, serial_in=serial_in, float_level=float_level,
                        gosub_model=gosub_model, end_glitch=end_glitch,
-                       initial_ram=initial_ram, **kw)
+                       initial_ram=initial_ram, parts=parts, **kw)

@@ -112,15 +112,7 @@ def make_pulsout(pin: Callable, duration: Callable) -> Callable:
 
 def _wait_level(m: Machine, pin: int, level: int, timeout_us: int) -> Optional[int]:
     """Wait until an input pin reads ``level``; return the time, or None at the timeout."""
-    if m.input_level(pin) == level:
-        return m.t
-    deadline = m.t + timeout_us
-    nxt = m.stim.next_change(pin, m.t, deadline)
-    if nxt is None:
-        m.advance_to(deadline)
-        return None
-    m.advance_to(nxt)
-    return nxt
+    return m.wait_input(pin, level, m.t + timeout_us)
 
 
 def make_pulsin(pin: Callable, state: Callable, write: Callable) -> Callable:
@@ -171,8 +163,8 @@ def make_count(pin: Callable, duration: Callable, write: Callable) -> Callable:
         m.set_pin(p, output=False)
         start = m.t
         end = start + duration(m) * 1000
-        edges = m.stim.edges(p, start, end)
         level = m.input_level(p)
+        edges = m.input_edges(p, start, end)
         rising = 0
         for _ in edges:
             level ^= 1

@@ -13,11 +13,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Optional, Union
 
+from ..bench.board import Bench
+from ..bench.inputs import PinWaveforms
+from ..bench.terminal import screen, stream_text
+from ..diagnostics import split_lines
 from ..trace import PinTrace
 from .compiler import Program
-from .machine import CLOCK_HZ, Machine, StopRun
-from .stimulus import PinStimulus
-from ..bench.terminal import screen, stream_text
+from .machine import CLOCK_HZ, MASK, Machine, StopRun
 from .timing import Timing, get_timing
 
 __all__ = ["RunResult", "run_program", "DEFAULT_SECONDS", "DEFAULT_MAX_INSTRUCTIONS"]
@@ -101,7 +103,7 @@ def run_program(prog: Program, *, seconds: Optional[float] = None, cycles: Optio
                 debug_in: Union[str, bytes] = "", serial_in: Optional[dict] = None,
                 float_level: int = 0, gosub_model: str = "ring", end_glitch: bool = False,
                 max_instructions: int = DEFAULT_MAX_INSTRUCTIONS,
-                initial_ram: Optional[bytes] = None) -> RunResult:
+                initial_ram: Optional[bytes] = None, parts=()) -> RunResult:
     """Run ``prog``; see :func:`spinemu.pbasic.run_file` for the arguments."""
     tm = get_timing(timing)
     if gosub_model not in ("ring", "restart"):
@@ -115,7 +117,8 @@ def run_program(prog: Program, *, seconds: Optional[float] = None, cycles: Optio
         limit = int(DEFAULT_SECONDS * CLOCK_HZ)
     if isinstance(debug_in, str):
         debug_in = debug_in.encode("latin-1", "replace")
-    m = Machine(prog.eeprom, prog.defined, stimulus=PinStimulus(inputs, float_level),
+    stim = PinWaveforms(inputs or {}, CLOCK_HZ, base=MASK if float_level else 0, pin_count=16, poll_cycles=1)
+    m = Machine(prog.eeprom, prog.defined, inputs=stim, float_level=float_level, stimulated=stim.pins,
                 limit_us=limit, realistic=tm.realistic, debug_in=debug_in, serial_in=serial_in,
                 pin_names={p: n for p, n in prog.pin_names.items()}, n_selects=prog.n_selects,
                 gosub_model=gosub_model, end_glitch=end_glitch)
@@ -123,10 +126,13 @@ def run_program(prog: Program, *, seconds: Optional[float] = None, cycles: Optio
         # Experiments only: a real BS2 clears RAM at reset.  INS/OUTS/DIRS stay 0.
         for wi in range(3, 16):
             m.w[wi] = int.from_bytes(bytes(initial_ram)[2 * wi:2 * wi + 2], "little")
+    if parts:
+        (parts if isinstance(parts, Bench) else Bench(parts)).attach(m)
+        m.parts_attached()
     m.debug_char_us = tm.debug_char_us
     m.eeprom_write_us = tm.eeprom_write_us
     m.path = prog.path
-    m.source_lines = prog.source.splitlines()
+    m.source_lines = split_lines(prog.source)
     code = prog.code
     m.positions = [ins.pos for ins in code]
     fns = [ins.fn for ins in code]
@@ -147,6 +153,7 @@ def run_program(prog: Program, *, seconds: Optional[float] = None, cycles: Optio
         reason = stop.reason
         count += 1 if reason in ("end", "stop", "input") else 0
     m.trace.end_cycle = m.t
+    m.end_run(final=reason in ("end", "stop"))
     return RunResult(
         trace=m.trace,
         debug_output=stream_text(bytes(m.debug_out)),

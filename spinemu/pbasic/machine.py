@@ -12,6 +12,12 @@ the pins.  A pin is driven to its OUTS bit when its DIRS bit is 1; the
 recorded trace holds ``(t, DIRS, OUTS & DIRS)`` after every change, the
 format of the Spin side (:class:`spinemu.trace.PinTrace`, 16 pins).
 
+Undriven pins read the input model (:mod:`spinemu.bench.inputs`: the
+``inputs`` levels of a run, parts on the pins).  The machine offers the
+bench's engine interface (``clock_hz``, ``pin_count``, ``inputs``,
+``drive_history``, ``add_pin_listener``), so the same parts as on the
+Propeller hang on its pins (:mod:`spinemu.bench`).
+
 Hot path: :meth:`pins_changed` and :meth:`advance` run on every pin write and
 every timed command.
 """
@@ -20,15 +26,16 @@ from __future__ import annotations
 from collections import deque
 from typing import Optional
 
+from ..bench.history import TraceHistory
 from ..diagnostics import Diagnostic
 from ..trace import PinTrace
 from . import messages as M
-from .stimulus import PinStimulus
 
 __all__ = ["Machine", "StopRun", "CLOCK_HZ", "MASK"]
 
 CLOCK_HZ = 1_000_000
 MASK = 0xFFFF
+_NEVER = 1 << 62
 
 
 class StopRun(Exception):
@@ -45,14 +52,19 @@ class Machine:
     Args:
         eeprom: 2048 bytes as downloaded (DATA; program area zero).
         defined: 2048 flags, 1 where DATA defined the byte.
-        stimulus: input pin levels over time.
+        inputs: the input model: what undriven pins read (levels over microseconds).
+        float_level: what a pin no stimulus or part drives reads (for warnings).
+        stimulated: the pins the run's ``inputs`` levels name (bit mask).
         limit_us: stop when the clock would pass this time (None: no limit).
         realistic: charge interpreter time per instruction (see :mod:`.timing`).
         debug_in: bytes typed into the DEBUG terminal (DEBUGIN, SERIN 16).
         serial_in: ``{pin: bytes}`` that a device sends when SERIN listens.
     """
 
-    def __init__(self, eeprom: bytes, defined: bytes, *, stimulus: PinStimulus,
+    clock_hz = CLOCK_HZ
+    pin_count = 16
+
+    def __init__(self, eeprom: bytes, defined: bytes, *, inputs, float_level: int = 0, stimulated: int = 0,
                  limit_us: Optional[int], realistic: bool, debug_in: bytes = b"",
                  serial_in: Optional[dict] = None, pin_names: Optional[dict] = None,
                  n_selects: int = 0, gosub_model: str = "ring", end_glitch: bool = False,
@@ -61,7 +73,9 @@ class Machine:
         self.t = 0
         self.limit = limit_us
         self.realistic = realistic
-        self.stim = stimulus
+        self.inputs = inputs
+        self.float_level = 1 if float_level else 0
+        self._stimulated = stimulated & MASK
         self.eeprom = bytearray(eeprom)
         self.defined = bytearray(defined)
         self.ee_writes: dict[int, int] = {}
@@ -88,14 +102,64 @@ class Machine:
         self.source_lines: list[str] = []
         self.pc = 0                      # the running instruction (set by the run loop)
         self.positions: list = []        # source position of each instruction
-        # pins that float when undriven: no stimulus at all
-        self.unstimulated = ~stimulus.stimulated_mask & MASK
+        # pins that float when undriven: no stimulus and no part (set again once parts are attached)
+        self.unstimulated = ~self._stimulated & MASK
+        self.drive_history = TraceHistory(self.trace.changes)
+        self.pin_listeners: list = []
+        self._listen_step = 0
+        self._listen_at = _NEVER
+        self._listen_from = 0
+
+    # ------------------------------------------------------------ bench engine interface
+    def add_pin_listener(self, listener, interval_cycles: Optional[int] = None) -> None:
+        """Call ``listener(changes, upto, present)`` as the run goes (see :mod:`spinemu.bench`).
+
+        ``changes`` are the pin states before ``upto`` since the last call;
+        the BS2 reads its pins at its present, so ``present`` is ``upto``.
+        """
+        step = max(1, int(interval_cycles or CLOCK_HZ // 100))
+        self.pin_listeners.append(listener)
+        self._listen_step = min(self._listen_step, step) if self._listen_step else step
+        self._listen_at = min(self._listen_at, self.t + self._listen_step)
+
+    def parts_attached(self) -> None:
+        """The bench is attached: the pins it drives no longer float."""
+        self.unstimulated = ~(self._stimulated | int(getattr(self.inputs, "mask", 0) or 0)) & MASK
+
+    def _deliver(self, upto: int) -> None:
+        changes = self.trace.changes
+        n = len(changes)
+        k = self._listen_from
+        while k < n and changes[k][0] < upto:
+            k += 1
+        new = changes[self._listen_from:k]
+        self._listen_from = k
+        for listener in self.pin_listeners:
+            listener(new, upto, upto if upto < _NEVER else self.t + 1)
+
+    def _time_passes(self, t: int) -> None:
+        """Time goes from now to ``t`` with no pin change: the listeners see it in steps."""
+        at = self._listen_at
+        while at <= t:
+            self._deliver(at)
+            at += self._listen_step
+        self._listen_at = at
+
+    def end_run(self, final: bool) -> None:
+        """After the run: the last listener calls (``final``: nothing will change the pins any more)."""
+        if not self.pin_listeners:
+            return
+        self._deliver(_NEVER if final else self.t + 1)
+        for listener in self.pin_listeners:
+            ended = getattr(listener, "run_ended", None)
+            if ended is not None:
+                ended(self.t)
 
     # ------------------------------------------------------------ pins
     def ins(self) -> int:
-        """INS: driven level of outputs, stimulus level of inputs."""
+        """INS: driven level of outputs, the input model's level of inputs."""
         d = self.w[2]
-        return ((self.w[1] & d) | (self.stim.mask(self.t) & ~d)) & MASK
+        return ((self.w[1] & d) | (self.inputs.levels(self.t) & ~d)) & MASK
 
     def pin_level(self, pin: int) -> int:
         bit = 1 << pin
@@ -107,13 +171,50 @@ class Machine:
         """The level an input pin reads now ([OPEN] an unstimulated pin floats)."""
         if self.unstimulated >> pin & 1:
             self.float_warning(1 << pin)
-        return self.stim.level(pin, self.t)
+        return (self.inputs.levels(self.t) >> pin) & 1
+
+    def wait_input(self, pin: int, level: int, deadline: Optional[int]) -> Optional[int]:
+        """Let time pass until input ``pin`` reads ``level``; the time it does, or None at ``deadline``.
+
+        Without a deadline and with nothing to change the pin, the run ends
+        (``StopRun("input")``) at the time limit.
+        """
+        inputs = self.inputs
+        if self.unstimulated >> pin & 1:
+            self.float_warning(1 << pin)
+        while (inputs.levels(self.t) >> pin) & 1 != level:
+            nxt = inputs.next_change(self.t)
+            if nxt is not None and self.pin_listeners and nxt > self._listen_at:
+                nxt = self._listen_at            # listeners may send input meanwhile
+            if nxt is None or (deadline is not None and nxt > deadline):
+                if deadline is None:
+                    self.advance_to(self.limit if self.limit is not None else self.t)
+                    raise StopRun("input")
+                self.advance_to(deadline)
+                return None
+            self.advance_to(nxt)
+        return self.t
+
+    def input_edges(self, pin: int, start: int, end: int) -> list:
+        """Times in ``(start, end]`` at which input ``pin`` changes level (time does not pass)."""
+        inputs = self.inputs
+        out = []
+        t = start
+        level = (inputs.levels(t) >> pin) & 1
+        while True:
+            t = inputs.next_change(t)
+            if t is None or t > end:
+                return out
+            now = (inputs.levels(t) >> pin) & 1
+            if now != level:
+                out.append(t)
+                level = now
 
     def float_warning(self, pins_mask: int, pos=None) -> None:
         pins = [p for p in range(16) if pins_mask >> p & 1]
         self.warn(pos or self.here(), M.W_FLOATING.format(
                       ", ".join(f"P{p}" for p in pins), "s" if len(pins) > 1 else "",
-                      "" if len(pins) > 1 else "s", self.stim.float_level))
+                      "" if len(pins) > 1 else "s", self.float_level))
 
     def here(self):
         """Source position of the running instruction."""
@@ -137,8 +238,12 @@ class Machine:
         """Let ``us`` microseconds pass; stop the run at the time limit."""
         t = self.t + us
         if self.limit is not None and t > self.limit:
+            if self.limit >= self._listen_at:
+                self._time_passes(self.limit)
             self.t = self.limit
             raise StopRun("time")
+        if t >= self._listen_at:
+            self._time_passes(t)
         self.t = t
 
     def advance_to(self, t: int) -> None:
@@ -149,7 +254,7 @@ class Machine:
         """Block for good (SERIN without data and without timeout)."""
         self.warn(pos, M.W_INPUT_WAIT.format(what))
         if self.limit is not None:
-            self.t = self.limit
+            self.advance_to(self.limit)
         raise StopRun("input")
 
     # ------------------------------------------------------------ EEPROM

@@ -16,6 +16,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Optional, Union
 
+from ..diagnostics import split_lines
+
 __all__ = [
     "Pos", "Num", "Str", "Ref", "Unary", "Binary", "Compare", "Logic", "Not",
     "Expr", "Stmt", "Label", "Word", "Program",
@@ -144,5 +146,5 @@ class Program:
     language: str = "2.5"
 
     def source_line(self, line: int) -> Optional[str]:
-        lines = self.source.splitlines()
+        lines = split_lines(self.source)
         return lines[line - 1] if 1 <= line <= len(lines) else None

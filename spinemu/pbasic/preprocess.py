@@ -19,7 +19,7 @@ from __future__ import annotations
 import re
 from typing import Callable, Optional
 
-from ..diagnostics import ParseError, source_line_at
+from ..diagnostics import ParseError, source_line_at, split_lines
 from . import messages as M
 
 __all__ = ["Directives", "scan_directives", "conditional_compile", "STAMP_IDS"]
@@ -52,7 +52,7 @@ def scan_directives(text: str, path: str) -> Directives:
             PBASIC version.
     """
     d = Directives()
-    for n, line in enumerate(text.splitlines(), 1):
+    for n, line in enumerate(split_lines(text), 1):
         quote = _comment_start(line)
         if quote < 0:
             continue

@@ -19,6 +19,10 @@ SERIN, SEROUT, SHIFTIN, SHIFTOUT pages) and BASIC Stamp Programming Manual
 * Incoming serial data (``serial_in``, ``debug_in``) is available at once and
   arrives at the receiver's baud rate; when it runs out, SERIN waits for its
   timeout (or forever) and DEBUGIN waits forever.
+* On a pin a bench part or a stimulus drives (a serial console,
+  :mod:`spinemu.bench`), SERIN reads the line itself (:class:`WireReader`):
+  a start edge, each bit in its middle; bytes arrive when they are sent, and
+  the timeout limits the wait for each byte.
 """
 from __future__ import annotations
 
@@ -99,18 +103,7 @@ def _frame_bits(b: int, seven_e: bool) -> list[int]:
 
 def _wait_pin(m: Machine, pin: int, level: int, timeout_ms: Optional[int]) -> bool:
     """Wait for an input to read ``level``; False if ``timeout_ms`` passed first."""
-    if m.input_level(pin) == level:
-        return True
-    deadline = None if timeout_ms is None else m.t + timeout_ms * 1000
-    nxt = m.stim.next_change(pin, m.t, deadline)
-    if nxt is None:
-        if deadline is None:
-            m.advance_to(m.limit if m.limit is not None else m.t)
-            raise StopRun("input")
-        m.advance_to(deadline)
-        return False
-    m.advance_to(nxt)
-    return True
+    return m.wait_input(pin, level, None if timeout_ms is None else m.t + timeout_ms * 1000) is not None
 
 
 def make_debug(items: list) -> Callable:
@@ -164,7 +157,10 @@ class _NoData(Exception):
 
 
 class Reader:
-    """Bytes arriving on one serial input, at ``byte_us`` per byte."""
+    """Bytes arriving on one serial input, at ``byte_us`` per byte (a queue: ``serial_in``, ``debug_in``)."""
+
+    #: time passes in :meth:`finish`, not while reading
+    waits = False
 
     def __init__(self, m: Machine, queue, byte_us: float):
         self.m, self.q, self.byte_us = m, queue, byte_us
@@ -178,6 +174,68 @@ class Reader:
 
     def peek(self) -> Optional[int]:
         return self.q[0] if self.q else None
+
+    def finish(self, start: int) -> None:
+        """The bytes read took their time at the baud rate, from ``start``."""
+        self.m.t = start
+        self.m.advance(int(round(self.n * self.byte_us)))
+
+
+class WireReader:
+    """Bytes received from a pin's level, as the BS2's UART does: a start edge, then each bit in its middle.
+
+    Used when a bench part or a stimulus drives the pin (a serial console,
+    a device): the bytes arrive when the sender sends them, and a byte sent
+    while SERIN is not listening is lost, as on the real line.  Time passes
+    while reading; ``timeout_us`` limits the wait for each byte.
+    """
+
+    waits = True
+
+    def __init__(self, m: Machine, pin: int, bit_us: int, seven_e: bool, inverted: bool,
+                 timeout_us: Optional[int]):
+        self.m, self.pin, self.bit_us = m, pin, bit_us
+        self.nbits = 8
+        self.seven = seven_e
+        self.inverted = 1 if inverted else 0
+        self.timeout_us = timeout_us
+        self.n = 0
+        self._held: Optional[int] = None
+
+    def _receive(self) -> int:
+        m = self.m
+        deadline = m.t + self.timeout_us if self.timeout_us is not None else m.limit
+        active = self.inverted                      # a start bit: low in true mode
+        if m.wait_input(self.pin, 1 - active, deadline) is None:    # the line at rest first
+            raise _NoData()
+        t = m.wait_input(self.pin, active, deadline)
+        if t is None:
+            raise _NoData()
+        value = 0
+        for k in range(self.nbits):
+            m.advance_to(t + (2 * k + 3) * self.bit_us // 2)
+            value |= (m.input_level(self.pin) ^ self.inverted) << k
+        m.advance_to(t + (2 * self.nbits + 3) * self.bit_us // 2)       # the stop bit's middle
+        return value & 0x7F if self.seven else value
+
+    def get(self) -> int:
+        if self._held is not None:
+            b, self._held = self._held, None
+        else:
+            b = self._receive()
+        self.n += 1
+        return b
+
+    def peek(self) -> Optional[int]:
+        if self._held is None:
+            try:
+                self._held = self._receive()
+            except _NoData:
+                return None
+        return self._held
+
+    def finish(self, start: int) -> None:
+        """Time has passed while reading."""
 
 
 def _read_number(r: Reader, fmt: str) -> int:
@@ -280,14 +338,13 @@ def in_skip(count: Callable) -> Callable:
     return item
 
 
-def _receive(m: Machine, r: Reader, items: list, start: int) -> bool:
+def _receive(m: Machine, r, items: list, start: int) -> bool:
     try:
         run_input_items(r, items)
         ok = True
     except _NoData:
         ok = False
-    m.t = start
-    m.advance(int(round(r.n * r.byte_us)))
+    r.finish(start)
     return ok
 
 
@@ -306,6 +363,7 @@ def make_serin(rpin: Callable, fpin: Optional[Callable], baud: Callable,
         mode = baud(m)
         bit_us = (mode & 0x1FFF) + 20
         inverted = bool(mode & 0x4000)
+        wired = p < 16 and (int(getattr(m.inputs, "mask", 0) or 0) >> p) & 1
         if p >= 16:
             queue = m.debug_in
         else:
@@ -314,14 +372,19 @@ def make_serin(rpin: Callable, fpin: Optional[Callable], baud: Callable,
         f = fpin(m) & 15 if fpin else None
         if f is not None:
             m.set_pin(f, out=1 if inverted else 0, output=True)         # ready
-        r = Reader(m, queue, 10 * bit_us)
+        tmo = timeout(m) * 1000 if timeout is not None else None
+        if wired:                       # a part or stimulus drives the pin: read the line itself
+            r = WireReader(m, p, bit_us, bool(mode & 0x2000), inverted, tmo)
+        else:
+            r = Reader(m, queue, 10 * bit_us)
         ok = _receive(m, r, items, m.t)
         if f is not None:
             m.set_pin(f, out=0 if inverted else 1, output=True)         # not ready
         if ok:
             return None
         if timeout is not None:
-            m.advance(timeout(m) * 1000)
+            if not r.waits:
+                m.advance(tmo)
             return tlabel.pc
         m.wait_forever(f"SERIN pin {p}", pos)
         return None

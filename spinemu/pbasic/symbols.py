@@ -23,7 +23,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Callable, Optional
 
-from ..diagnostics import CompileError
+from ..diagnostics import CompileError, split_lines
 from . import messages as M
 from . import nodes as N
 from .exprs import eval_const
@@ -90,7 +90,7 @@ class SymbolTable:
 
     # ------------------------------------------------------------ errors
     def error(self, message: str, pos: Optional[N.Pos]) -> CompileError:
-        lines = self.source.splitlines()
+        lines = split_lines(self.source)
         line = pos.line if pos else None
         src = lines[line - 1] if line and 0 < line <= len(lines) else None
         return CompileError(message, path=self.path, line=line,

@@ -50,15 +50,22 @@ def get_parser() -> Lark:
 
 
 def read_source(path: str) -> str:
-    """A source file as text: UTF-8 if it decodes, otherwise Windows-1252 (the Stamp editor's).
+    """A source file as text: UTF-16 or UTF-8 with a byte-order mark, UTF-8 if it decodes,
+    otherwise Windows-1252 (the Stamp editor's).
 
     Raises:
         ParseError: the file cannot be read.
     """
     try:
+        if Path(path).exists() and not Path(path).is_file() and not Path(path).is_dir():
+            raise OSError(0, "not a regular file")      # a device such as /dev/zero would never end
         data = Path(path).read_bytes()
     except OSError as e:
         raise ParseError(M.CANNOT_READ.format(e.strerror or e), path=str(path)) from None
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):      # UTF-16 with a byte-order mark (a Windows editor)
+        return data.decode("utf-16", errors="replace")
+    if data.startswith(b"\xef\xbb\xbf"):                  # UTF-8 with a byte-order mark (Notepad)
+        data = data[3:]
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError:
@@ -192,11 +199,31 @@ def _statement_start_word(line_text: str, col: int) -> Optional[tuple[str, int]]
     return m.group(1), segment_start + m.start(1) + 1
 
 
+#: Deepest parse tree built into nodes (the node builder and the compiler recurse per level);
+#: an expression this deep is far past what the BS2's 8-entry expression stack evaluates.
+MAX_TREE_DEPTH = 100
+
+
 def _parse(text: str, start: str, path: str, original: str) -> Tree:
     try:
-        return get_parser().parse(text, start=start)
+        tree = get_parser().parse(text, start=start)
     except UnexpectedInput as e:
         raise _syntax_error(e, text, path, original) from None
+    _check_depth(tree, path, original)
+    return tree
+
+
+def _check_depth(tree: Tree, path: str, original: str) -> None:
+    """Refuse a tree deeper than :data:`MAX_TREE_DEPTH` (walked without recursion)."""
+    stack = [(tree, 0)]
+    while stack:
+        node, depth = stack.pop()
+        if depth > MAX_TREE_DEPTH:
+            meta = node.meta
+            line = getattr(meta, "line", None)
+            raise ParseError(M.EXPRESSION_TOO_COMPLEX, path=path, line=line, column=getattr(meta, "column", None),
+                             source_line=source_line_at(original, line) if line else None)
+        stack.extend((child, depth + 1) for child in node.children if isinstance(child, Tree))
 
 
 def _syntax_error(e: UnexpectedInput, text: str, path: str, original: str) -> ParseError:
@@ -269,11 +296,15 @@ def _mpos(meta) -> N.Pos:
 
 
 def _number(tok: Token) -> int:
+    """A literal's value; a decimal of more than 40 digits reads as ``2**160`` (too big either
+    way: Python refuses to convert decimal text longer than 4,300 digits)."""
     s = str(tok.value)
     if s.startswith("$"):
         return int(s[1:], 16)
     if s.startswith("%"):
         return int(s[1:], 2)
+    if len(s.lstrip("0")) > 40:
+        return 1 << 160
     return int(s)
 
 

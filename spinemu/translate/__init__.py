@@ -19,6 +19,7 @@ import os
 import shutil
 import tempfile
 
+from .code import docstring_text
 from .program import TranslateError, translate_program
 from .weave import load_package
 
@@ -27,7 +28,17 @@ __all__ = ["translate_file", "side_by_side", "run_translated", "run_package", "l
 _IMAGE_NAME = "spin_image.binary"
 
 
+def _check_compiles(modules) -> None:
+    """Every generated module must be valid Python; anything else is a bug in the translator."""
+    for m in modules:
+        try:
+            compile(m.text, m.module + ".py", "exec")
+        except (SyntaxError, ValueError) as e:
+            raise RuntimeError(f"the Python generated for {m.spin_path} does not compile: {e}") from e
+
+
 def _write(modules, compiled, out_dir: str) -> list[str]:
+    _check_compiles(modules)
     os.makedirs(out_dir, exist_ok=True)
     paths = []
     for m in modules:
@@ -37,7 +48,7 @@ def _write(modules, compiled, out_dir: str) -> list[str]:
         paths.append(path)
     top = modules[0]
     with open(os.path.join(out_dir, "__init__.py"), "w", encoding="utf-8") as fh:
-        fh.write(f'"""{os.path.basename(top.spin_path)} translated to Python by spinemu.translate."""\n'
+        fh.write(f'"""{docstring_text(os.path.basename(top.spin_path))} translated to Python by spinemu.translate."""\n'
                  f"from .{top.module} import {top.class_name}\n\n"
                  f'TOP = {top.class_name}\nIMAGE = "{_IMAGE_NAME}"\n')
     with open(os.path.join(out_dir, _IMAGE_NAME), "wb") as fh:
@@ -93,8 +104,8 @@ def run_translated(src_path, include_dirs=(), max_cycles=None, compat: str = "sp
         include_dirs: more folders to look for OBJ files in.
         max_cycles: stop at this cycle (``None``: until every cog stopped).
         compat, inputs: as for :class:`spinemu.chip.Chip`.
-        parts: bench parts to attach to the chip (each ``part.attach(chip)``
-            before the run), e.g. a :class:`spinemu.bench.SerialConsole`.
+        parts: a :class:`spinemu.bench.Bench` or a list of bench parts, attached
+            to the chip before the run, e.g. a :class:`spinemu.bench.SerialConsole`.
 
     Returns:
         a :class:`spinemu.chip.RunResult` (trace, hub, end cycle, ...).

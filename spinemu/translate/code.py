@@ -8,11 +8,45 @@ the cycles the weaver charges around Python lines (see weave.py).
 """
 from __future__ import annotations
 
+import re
+
 from .costs import access_range, chain
 
-__all__ = ["Code", "COMMENT_COLUMN"]
+__all__ = ["Code", "COMMENT_COLUMN", "comment_text", "docstring_text"]
 
 COMMENT_COLUMN = 56
+
+
+def _escape_unprintable(text: str) -> str:
+    """Characters Python source cannot hold as they are (NUL, CR, line separators, lone
+    surrogates, other control characters) as their backslash escapes; tabs stay."""
+    if text.isprintable():
+        return text
+    return "".join(ch if ch.isprintable() or ch == "\t" else ch.encode("unicode_escape", "backslashreplace")
+                   .decode("ascii") for ch in text)
+
+
+def comment_text(text: str) -> str:
+    r"""Spin comment text made safe for the end of a Python ``#`` comment (one line, printable).
+
+    >>> print(comment_text("a\rb\x00c"))
+    a\rb\x00c
+    """
+    return _escape_unprintable(text)
+
+
+def docstring_text(text: str) -> str:
+    r"""Text for one line of a triple-quoted docstring that reads back as ``text``.
+
+    Backslashes are doubled, unprintable characters escaped, and a quote mark
+    escaped where it would start or end a triple quote (before another quote
+    mark, or last on the line).
+
+    >>> print(docstring_text('say ' + '"' * 3 + 'hi" \\N'))
+    say \"\""hi" \\N
+    """
+    out = _escape_unprintable(text.replace("\\", "\\\\"))
+    return re.sub(r'"(?="|$)', r'\\"', out)
 
 
 class Code:
@@ -66,7 +100,7 @@ class Code:
         text = self.spin.source.line(spin_line) or ""
         notes = [c.text.strip() for c in self.spin.comments_at(spin_line)
                  if c.kind in ("'", "''", "{", "{{") and text[: c.col - 1].strip()]
-        return " ".join(" ".join(n.split()) for n in notes if n)     # a block comment becomes one line
+        return comment_text(" ".join(" ".join(n.split()) for n in notes if n))  # a block comment: one line
 
     def comments_before(self, spin_line: int) -> None:
         """Carry over the Spin comments on lines of their own before ``spin_line``."""
@@ -76,7 +110,7 @@ class Code:
                 if src[: c.col - 1].strip():
                     continue
                 for part in c.text.splitlines() or [""]:
-                    self.line("#" + (" " + part.strip() if part.strip() else ""))
+                    self.line("#" + (" " + comment_text(part.strip()) if part.strip() else ""))
             self._last_spin = max(self._last_spin, n)
 
     def skip_to(self, spin_line: int) -> None:
@@ -88,10 +122,18 @@ class Code:
         entry = self.charges.setdefault(line, {})
         return entry.setdefault(slot, [[], 0])
 
-    def charge(self, line: int, slot: str, ops) -> None:
+    def charge(self, line: int, slot: str, ops, first: bool = False) -> None:
         """Charge a run of bytecodes ``ops`` at ``slot`` of ``line`` (b: before, a: after, e: else/exit,
-        t: each test of a ``while``, p: the statement's own rest, before it stores or returns)."""
-        self._slot(line, slot)[0].extend(ops)
+        t: each test of a ``while``, p: the statement's own rest, before it stores or returns).
+
+        ``first``: these bytecodes run before the ones charged there already
+        (a condition's jump before the first statement of its body).
+        """
+        run = self._slot(line, slot)[0]
+        if first:
+            run[:0] = ops
+        else:
+            run.extend(ops)
 
     def charge_add(self, line: int, slot: str, cycles: int) -> None:
         """Charge plain cycles (no fetch alignment) at ``slot`` of ``line``."""
@@ -102,8 +144,9 @@ class Code:
         self.charges.setdefault(line, {})["mid"] = list(ops)
 
     def charge_each(self, line: int, runs) -> None:
-        """Charge one run before each operand of the ``or`` in the condition of the ``if`` on ``line``."""
-        self.charges.setdefault(line, {})["each"] = [list(r) for r in runs]
+        """Charge one run before each operand of the ``or`` in the condition of the ``if`` on ``line``
+        (a pair of runs: before the operand, and once its value is computed)."""
+        self.charges.setdefault(line, {})["each"] = [r if isinstance(r, tuple) else list(r) for r in runs]
 
     def charge_table(self) -> dict:
         """``{line: (before, after, else[, test[, post]])}``, each ``(aligned, extra[, access])`` or None.
@@ -130,7 +173,8 @@ class Code:
                 row[0] = (b[0], b[1], b[2] if len(b) > 2 else None, chain(mid))
             each = entry.get("each")
             if each:
-                row[3] = tuple((chain(r), 0) for r in each)
+                row[3] = tuple(((chain(r[0]), 0), (chain(r[1]), 0)) if isinstance(r, tuple) else (chain(r), 0)
+                               for r in each)
             while len(row) > 3 and not row[-1]:
                 row.pop()
             if any(row):

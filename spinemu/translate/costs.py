@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from ..bytecode import TABLE, decode_assign, decode_unsigned, instruction_length
 from ..chip.timing import MATH_REF, Timing, access_offsets
 
-__all__ = ["Op", "price", "chain", "split", "split_read", "jump_op", "ceil16", "access_at", "access_range"]
+__all__ = ["Op", "price", "chain", "split", "split_read", "anchor_at", "jump_op", "ceil16", "access_at", "access_range"]
 
 
 @dataclass(frozen=True)
@@ -34,8 +34,10 @@ class Op:
 
     code: int
     rest: int
-    kind: str = ""        # "", "read", "write", "call", "wait", "cog"
+    kind: str = ""        # "", "read", "write", "call", "wait", "cog", "look" (items paid at run time),
+    #                       "paid" (a helper adds value-dependent cycles when it runs)
     hub: bool = False     # reads or writes hub RAM other cogs may share (VAR, DAT, memory, locks)
+    helper: str = ""      # "paid": the spinemu.translate.spin helper that pays it (div, strsize ...)
 
 
 def ceil16(n: int) -> int:
@@ -54,7 +56,29 @@ def chain(ops) -> int | None:
     return sum(ceil16(o.rest + 12) for o in ops[:-1]) + ops[-1].rest
 
 
-_PRIORITY = {"write": 0, "wait": 1, "cog": 2, "call": 3, "read": 4}
+_PRIORITY = {"write": 0, "wait": 1, "cog": 2, "call": 3, "look": 3, "read": 4}
+
+
+def anchor_at(ops):
+    """The index of the op :func:`split` places a statement's charge around, or None (no timed op).
+
+    The most important event (a write, a wait, a cog start or stop, a call,
+    a read); a write after a call or a paid-item lookup gives way to the last
+    of those; a bytecode whose helper pays its cycles (``paid``: a division)
+    is the anchor only when there is nothing else: its helper must run after
+    it is paid, so it goes before the charge's cut (:func:`split`).
+    """
+    timed = [(i, o) for i, o in enumerate(ops) if o.kind and o.kind != "paid"]
+    if not timed:
+        paid = [i for i, o in enumerate(ops) if o.kind == "paid"]
+        return paid[-1] if paid else None
+    j, anchor = min(timed, key=lambda io: (_PRIORITY[io[1].kind], io[0]))
+    calls = [i for i, o in timed if o.kind in ("call", "look") and i < j]
+    if anchor.kind == "write" and calls:
+        # ``outa := f(x)``: the call is paid before it runs, the write after the call returns
+        # (the translator pays ``post`` between computing the value and storing it)
+        j = calls[-1]
+    return j
 
 
 def split(ops) -> tuple[list, list]:
@@ -64,13 +88,15 @@ def split(ops) -> tuple[list, list]:
     (the value lands in its last instruction, 4 cycles before the next
     bytecode); a call too (the callee runs after it); a read, a wait, a cog
     start or stop are paid after (the helper uses the cycle at which they
-    start).  Waits are paid by their helper, so they are left out.
+    start), and so is a lookup whose items the runtime pays (``look``, its
+    LOOK_DONE: the items come before it).  Waits are paid by their helper, so
+    they are left out.  (:func:`anchor_at` chooses.)
     """
-    timed = [(i, o) for i, o in enumerate(ops) if o.kind]
-    if not timed:
+    j = anchor_at(ops)
+    if j is None:
         return list(ops), []
-    j, anchor = min(timed, key=lambda io: (_PRIORITY[io[1].kind], io[0]))
-    cut = j + 1 if anchor.kind in ("write", "call") else j
+    anchor = ops[j]
+    cut = j + 1 if anchor.kind in ("write", "call", "paid") else j
     pre, post = list(ops[:cut]), list(ops[cut:])
     post = [o for o in post if o.kind != "wait"]
     pre = [o for o in pre if o.kind != "wait"]
@@ -137,7 +163,11 @@ def price(T: Timing, data: bytes, run_params: int = 0, inside: bool = True) -> l
     while i < n:
         op = data[i]
         length = instruction_length(data, i)
-        ops.append(Op(op, _rest(T, data, i, op, run_params, inside), _kind(data, i, op), _hub(op, data, i)))
+        kind = _kind(data, i, op)
+        if op == 0x0F and not (ops and 0x10 <= ops[-1].code <= 0x13):
+            kind = "look"       # LOOK_DONE right after the value: a lookup whose items the runtime pays
+        helper = paid_helper(data, i) if kind == "paid" else ""
+        ops.append(Op(op, _rest(T, data, i, op, run_params, inside), kind, _hub(op, data, i), helper or ""))
         i += length
     return ops
 
@@ -180,6 +210,42 @@ def access_range(ops):
     return None if first is None else (first, last)
 
 
+#: bytecodes whose cycles depend on values: a helper of spinemu.translate.spin adds the difference when
+#: it runs (``paid``), so the run with the bytecode must be paid before it: the Python name of each
+PAID_HELPERS = {0xF6: "div", 0xF7: "mod", 0xF1: "encode", 0x16: "strsize", 0x17: "strcomp", 0x18: "bytefill",
+                0x19: "wordfill", 0x1A: "longfill", 0x1C: "bytemove", 0x1D: "wordmove", 0x1E: "longmove"}
+
+
+def paid_helper(data, i: int):
+    """The helper that pays the bytecode at ``data[i]`` its value-dependent cycles, or None."""
+    op = data[i]
+    if op in PAID_HELPERS:
+        return PAID_HELPERS[op]
+    p = _assign_at(data, i)
+    if p is not None:
+        aop = decode_assign(data[p])
+        if aop is not None and aop.math is not None and aop.math.code in (0xF6, 0xF7):
+            return PAID_HELPERS[aop.math.code]      # x /= y
+    return None
+
+
+def _assign_at(data, i: int):
+    """Where the assignment-operator byte of a USING bytecode at ``i`` is, or None."""
+    op = data[i]
+    if op in (0x3D, 0x3E, 0x3F):
+        return i + 2 if (data[i + 1] >> 5) & 3 == 2 else None
+    if op == 0x26:
+        return i + 1
+    if 0x40 <= op < 0x80:
+        return i + 1 if op & 3 == 2 else None
+    if 0x80 <= op < 0xE0 and op & 3 == 2:
+        p = i + 1
+        if (op >> 2) & 3:
+            _, p = decode_unsigned(data, p)
+        return p
+    return None
+
+
 def _kind(data, i, op) -> str:
     if op in (0x05, 0x06, 0x07):
         return "call"
@@ -198,7 +264,7 @@ def _kind(data, i, op) -> str:
         return "read"
     if op in (0x25, 0x26):
         return "write"
-    return ""
+    return "paid" if paid_helper(data, i) else ""
 
 
 def _rest(T: Timing, data, i: int, op: int, run_params: int, inside: bool) -> int:
@@ -301,6 +367,8 @@ def call_depths(data: bytes, callee) -> list:
             depth += 1 if frame & 1 == 0 else 0
         elif 0x40 <= op < 0xE0 or op in (0x3D, 0x3E, 0x3F, 0x26):
             depth += _access_effect(data, i, op)
+        elif 0x10 <= op <= 0x13:            # a lookup item compared: popped (a match ends where LOOK_DONE does)
+            depth -= entry.pops
         elif entry.pops is not None and entry.pushes is not None:
             depth += entry.pushes - entry.pops
         i += length

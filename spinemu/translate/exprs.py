@@ -10,7 +10,8 @@ truth test).  Stores to hub variables and registers keep the low bits anyway.
 Spin expressions with side effects (``x := y``, ``x++``, ``x~``) become
 statements placed before the one that uses them (``hoist``), in Spin's
 evaluation order; a value computed before such a side effect is first saved
-in a temporary so that it keeps Spin's meaning.
+in a temporary so that it keeps Spin's meaning (order.py decides, from the
+AST).
 
 Operator mapping (Propeller Manual v1.2, "Operators"): Python's operator
 where it means the same on signed values (``+ - * & | ^ ~ == < max min``),
@@ -24,6 +25,7 @@ from dataclasses import dataclass
 
 from ..frontend import ast as A
 from ..frontend.constants import float_bits
+from .order import _EVENT_BUILTINS, _PAID_BUILTINS, ASSIGNING_UNARY, EvalOrder
 
 __all__ = ["X", "ExprTranslator", "PREC"]
 
@@ -41,10 +43,20 @@ class X:
     wrapped: bool = True
     boolean: bool = False
     const: object = None          # its value, if a constant
+    saved: bool = False           # a temporary assigned once (nothing can change it)
+    truthy: bool = False          # a Python and/or: its value is an operand's, true or false only as a condition
 
     def paren(self, prec: int) -> str:
         return f"({self.text})" if self.prec < prec else self.text
 
+
+class Event(str):
+    """A line that makes one of its statement's timed events (a call, a register read or write, a wait,
+    a cog start or stop, a lookup paid item by item): see ``MethodTranslator.timed_statement``."""
+
+
+#: registers whose value changes with time: a read-modify-write of one is timed by its read
+TIME_REGISTERS = frozenset(("CNT", "INA", "INB", "PHSA", "PHSB"))
 
 _CMP = {"==": "==", "<>": "!=", "<": "<", ">": ">", "=<": "<=", "=>": ">="}
 _PY_BIN = {"+": "+", "-": "-", "*": "*", "&": "&", "|": "|", "^": "^"}
@@ -91,8 +103,8 @@ def number_text(node) -> str:
     return str(v)
 
 
-class ExprTranslator:
-    """Mix-in of the method translator (stmts.py): needs ``names``, ``lookup``, ``hoist``, ``temp``, ``error``."""
+class ExprTranslator(EvalOrder):
+    """Mix-in of the method translator (stmts.py): needs ``names``, ``lookup``, ``hoisted``, ``temp``, ``error``."""
 
     # ------------------------------------------------------------------ entry points
     def value(self, node) -> str:
@@ -106,6 +118,49 @@ class ExprTranslator:
         if x.wrapped:
             return x
         return X(f"wrap({x.text})")
+
+    # ------------------------------------------------------------------ timed events
+    def event(self, x: X, node) -> X:
+        """In a statement with several timed events (``timed_statement``), the event ``node`` on a line of
+        its own: ``value = self.f(a)``; else ``x`` as it is."""
+        if not self.event_mode or node is self.top_node or self.placing:
+            return x
+        tmp = self.temp("value")
+        self.hoisted.append(Event(f"{tmp} = {x.text}"))
+        return X(tmp, wrapped=x.wrapped, boolean=x.boolean, truthy=x.truthy, saved=True)
+
+    def is_event(self, node) -> bool:
+        """Is evaluating ``node`` itself a timed event (its last bytecode a call, a wait, a cog start ...)?"""
+        t = type(node)
+        if t in (A.Call, A.ObjCall, A.AbortTrap):
+            return True
+        if t is A.NameRef:
+            return self.lookup(node.name, node)[0] == "method"
+        if t is A.Builtin:
+            return node.name.lower() in _EVENT_BUILTINS or node.name.lower() in _PAID_BUILTINS
+        if t is A.Binary:
+            return node.op in ("/", "//")
+        if t is A.Unary:
+            return node.op == ">|"
+        return t in (A.RegRef, A.SprRef) or t is A.Lookup and self.lazy_items(node)
+
+    def line(self, text: str, event: bool) -> str:
+        """A hoisted line; an ``Event`` line if it makes a timed event in a statement written event by event."""
+        return Event(text) if event and self.event_mode else text
+
+    def store_event(self, target, reads: bool = False) -> bool:
+        """Is the line that stores to ``target`` (``reads``: the line that reads it, in a read-modify-write
+        written as two lines) the timed event of the assignment?  A register's write is; a
+        read-modify-write of a register that changes with time (``phsa += 1``) is timed by its read."""
+        if isinstance(target, A.Paren):
+            target = target.expr
+        if isinstance(target, A.RegRef):
+            return reads == (target.name.upper() in TIME_REGISTERS)
+        return isinstance(target, A.SprRef) and not reads
+
+    def num(self, x: X) -> X:
+        """``x`` as a number: a comparison becomes Spin's TRUE (-1) or FALSE; other values stay as they are."""
+        return X(f"spin.flag({x.text})") if x.boolean else x
 
     def cond(self, node) -> str:
         """``node`` as a Python condition."""
@@ -146,6 +201,9 @@ class ExprTranslator:
     def x_Paren(self, node) -> X:
         return self.expr(node.expr)
 
+    def x_Given(self, node) -> X:
+        return node.x
+
     def constant(self, node, spin_constant: bool = False):
         """The folded value of a constant expression, or None.
 
@@ -172,7 +230,7 @@ class ExprTranslator:
         if kind == "const":
             return X(f"self.{self.names.attr(node.name)}", const=sym)
         if kind == "method":
-            return self.call_text(node, node.name, [])
+            return self.x_Call(node)
         return self.read_var(kind, sym, node)
 
     def x_ResultRef(self, node) -> X:
@@ -221,23 +279,24 @@ class ExprTranslator:
 
     def x_MemRef(self, node) -> X:
         mem = {1: "byte", 2: "word", 4: "long"}[node.size]
-        base = self.expr(node.base).text
         if node.index is None:
-            return X(f"spin.{mem}[{base}]")
-        return X(f"spin.{mem}[{base}, {self.expr(node.index).text}]")
+            return X(f"spin.{mem}[{self.num(self.expr(node.base)).text}]")
+        base, index = map(self.num, self.operands([node.base, node.index]))
+        return X(f"spin.{mem}[{base.text}, {index.text}]")
 
     def x_RegRef(self, node) -> X:
         name = node.name.upper()
         if node.bit is None:
-            return X(f"cog.{name}")
+            return self.event(X(f"cog.{name}"), node)
         if node.bit2 is None:
-            return X(f"cog.{name}[{self.expr(node.bit).text}]")
-        return X(f"cog.{name}[{self.expr(node.bit).text}:{self.expr(node.bit2).text}]")
+            return self.event(X(f"cog.{name}[{self.num(self.expr(node.bit)).text}]"), node)
+        hi, lo = map(self.num, self.operands([node.bit, node.bit2]))
+        return self.event(X(f"cog.{name}[{hi.text}:{lo.text}]"), node)
 
     def x_SprRef(self, node) -> X:
-        return X(f"cog.spr[{self.expr(node.index).text}]")
+        return self.event(X(f"cog.spr[{self.num(self.expr(node.index)).text}]"), node)
 
-    def child(self, node, index) -> str:
+    def child(self, node, index, x: X = None) -> str:
         """The child object ``node.obj`` (``obj[i]``); an array named without an index is its element 0, as in Spin.
 
         Spin indexes the object table from the OBJ line's first entry, so
@@ -253,7 +312,7 @@ class ExprTranslator:
             return obj
         if count == 1 or (c is not None and not 0 <= c < count):
             self.unsupported(f"an index on object '{node.obj}' past its {count} instance{'s' if count > 1 else ''}", node)
-        return obj + f"[{self.value(index)}]"
+        return obj + f"[{self.wrapped(x).text if x is not None else self.value(index)}]"
 
     def x_ObjConst(self, node) -> X:
         obj = self.child(node, None)
@@ -262,34 +321,42 @@ class ExprTranslator:
 
     # ------------------------------------------------------------------ calls
     def x_Call(self, node) -> X:
-        return self.call_text(node, node.name, node.args)
+        func, args = self.call_parts(node)
+        return self.event(X(f"{func}({', '.join(args)})"), node)
 
-    def call_text(self, node, name, args) -> X:
-        kind, _sym = self.lookup(name, node)
-        if kind != "method":
-            self.unsupported(f"a call of '{name}', which is not a method", node)
-        return X(f"self.{self.names.attr(name)}({self.args(args)})")
+    x_ObjCall = x_Call
 
-    def args(self, args) -> str:
-        return ", ".join(self.value(a) for a in args)
+    def call_parts(self, node) -> tuple:
+        """``(the method as Python, [its arguments])`` of a call (``f(a)``, ``f``, ``obj[i].f(a)``).
 
-    def x_ObjCall(self, node) -> X:
-        obj = self.child(node, node.index)
-        return X(f"{obj}.{self.names.child_method(node.obj, node.method)}({self.args(node.args)})")
+        Spin pushes the arguments left to right, then an object index;
+        Python indexes first, so the arguments are saved first where that matters.
+        """
+        if isinstance(node, A.NameRef):
+            node = A.Call(node.pos, node.name, [])
+        if isinstance(node, A.Call):
+            kind, _sym = self.lookup(node.name, node)
+            if kind != "method":
+                self.unsupported(f"a call of '{node.name}', which is not a method", node)
+            return f"self.{self.names.attr(node.name)}", [self.wrapped(x).text for x in self.operands(node.args)]
+        method = self.names.child_method(node.obj, node.method)
+        index = self.effects(node.index)
+        if node.index is None or self.constant(node.index) is not None and not (index.any or index.paid):
+            args = [self.wrapped(x).text for x in self.operands(node.args)]
+            return f"{self.child(node, node.index)}.{method}", args
+        *args, index = self.operands(node.args + [node.index], reorder_after=len(node.args))
+        return f"{self.child(node, node.index, index)}.{method}", [self.wrapped(a).text for a in args]
 
     def x_AbortTrap(self, node) -> X:
-        call = node.call
-        if isinstance(call, A.NameRef):
-            call = A.Call(call.pos, call.name, [])
-        x = self.expr(call)
-        func, _, rest = x.text.partition("(")
-        rest = rest[:-1]
-        return X(f"spin.trap({func}" + (f", {rest})" if rest else ")"))
+        func, args = self.call_parts(node.call)
+        return self.event(X(f"spin.trap({', '.join([func] + args)})"), node)
 
     # ------------------------------------------------------------------ operators
     def x_Unary(self, node) -> X:
         op = node.op.upper() if node.op.isalpha() else node.op
         x = self.expr(node.operand)
+        if op != "NOT":
+            x = self.num(x)
         if op == "+":
             return x
         if op == "-":
@@ -303,8 +370,8 @@ class ExprTranslator:
         if op == "||":
             return X(f"abs({self.wrapped(x).text})", wrapped=False)
         if op in _HELPER_UN:
-            return X(f"{_HELPER_UN[op]}({x.text})")
-        if op in ("~", "~~", "?"):
+            return self.event(X(f"{_HELPER_UN[op]}({x.text})"), node) if op == ">|" else X(f"{_HELPER_UN[op]}({x.text})")
+        if op in ASSIGNING_UNARY:
             return self.pre_op(A.PreOp(node.pos, op, node.operand))
         self.unsupported(f"the operator {node.op}", node)
 
@@ -314,28 +381,26 @@ class ExprTranslator:
 
     def x_Binary(self, node) -> X:
         op = node.op.upper() if node.op.isalpha() else node.op
-        left = self.expr(node.left)
-        mark = len(self.hoisted)
-        right = self.expr(node.right)
-        if len(self.hoisted) > mark and left.const is None and not _is_plain(left):
-            tmp = self.temp("value")
-            self.hoisted.insert(mark, f"{tmp} = {left.text}")
-            left = X(tmp, wrapped=left.wrapped, boolean=left.boolean)
+        left, right = self.operands([node.left, node.right])
+        if op not in ("AND", "OR"):
+            left, right = self.num(left), self.num(right)
         if op in _CMP:
             return X(f"{self.wrapped(left).paren(5)} {_CMP[op]} {self.wrapped(right).paren(5)}", 4, boolean=True)
         if op in ("AND", "OR"):
-            if self.has_effects(node.right):
-                # Spin evaluates both operands (no short cut): `ok := start_a and start_b` calls both
+            right_effects = self.effects(node.right)
+            if right_effects.any or right_effects.paid:
+                # Spin evaluates both operands (no short cut): `ok := start_a and start_b` calls both,
+                # `a and b / c` pays for the division
                 sym = "&" if op == "AND" else "|"
                 p = PREC[sym]
-                lt = left.paren(p + 1) if left.boolean else f"bool({left.text})"
-                rt = right.paren(p + 1) if right.boolean else f"bool({right.text})"
+                lt, rt = (x.paren(p + 1) if x.boolean and not x.truthy
+                          else f"bool({x.text if x.boolean else self.wrapped(x).text})" for x in (left, right))
                 return X(f"{lt} {sym} {rt}", p, boolean=True)
             word = op.lower()
             lp, rp = PREC[word], PREC[word] + 1
             lt = left.paren(lp) if left.boolean else self.wrapped(left).paren(lp)
             rt = right.paren(rp) if right.boolean else self.wrapped(right).paren(rp)
-            return X(f"{lt} {word} {rt}", lp, boolean=True)
+            return X(f"{lt} {word} {rt}", lp, boolean=True, truthy=True)
         if op in _PY_BIN:
             p = PREC[op]
             wrapped = op in ("&", "|", "^") and left.wrapped and right.wrapped and not left.boolean \
@@ -345,28 +410,20 @@ class ExprTranslator:
             return X(f"{lt} {op} {rt}", p, wrapped=wrapped)
         if op == "<<":
             count = right.const & 31 if right.const is not None else None
-            rt = str(count) if count is not None else f"({right.text} & 31)"
+            rt = str(count) if count is not None else f"({right.paren(PREC['&'] + 1)} & 31)"
             return X(f"{left.paren(9)} << {rt}", 8, wrapped=False)
         if op == "~>":
             count = right.const & 31 if right.const is not None else None
-            rt = str(count) if count is not None else f"({right.text} & 31)"
+            rt = str(count) if count is not None else f"({right.paren(PREC['&'] + 1)} & 31)"
             return X(f"{self.wrapped(left).paren(9)} >> {rt}", 8)
         if op == "#>":
             return X(f"max({self.value_x(left)}, {self.value_x(right)})")
         if op == "<#":
             return X(f"min({self.value_x(left)}, {self.value_x(right)})")
         if op in _HELPER_BIN:
-            return X(f"{_HELPER_BIN[op]}({left.text}, {right.text})")
+            x = X(f"{_HELPER_BIN[op]}({left.text}, {right.text})")
+            return self.event(x, node) if op in ("/", "//") and node.pos is not None else x
         self.unsupported(f"the operator {node.op}", node)
-
-    def has_effects(self, node) -> bool:
-        """Does evaluating ``node`` change anything (a method call, an assignment, ``x++``, a lock or cog built-in)?"""
-        for n in A.walk(node):
-            if isinstance(n, _EFFECTS) or isinstance(n, A.Builtin) and n.name not in _PURE_BUILTINS:
-                return True
-            if isinstance(n, A.NameRef) and self.lookup(n.name, n)[0] == "method":   # called without ()
-                return True
-        return False
 
     def value_x(self, x: X) -> str:
         return self.wrapped(x).text
@@ -374,17 +431,24 @@ class ExprTranslator:
     # ------------------------------------------------------------------ side effects
     def x_Assign(self, node) -> X:
         if not self.narrow(node.target) and not isinstance(node.target, A.RegRef):
-            self.assign(node)
-            return self.reread(node.target)
+            text = self.assign(node, reuse=True)
+            return self.reread(node.target, text)
         # a byte/word/bit-field target keeps the low bits, but the expression's value is the whole result
         value = self.expr(node.value)
+        mark = len(self.hoisted)
+        text = self.place(node.target, reuse=True)
+        value = self.value_first(node.value, value, node.target, mark, True, reads_target=node.op != ":=")
         if node.op != ":=":
             op = node.op.upper() if node.op.isalpha() else node.op
-            value = self.wrapped(self.binop(op, self.expr(node.target), value))
+            value = self.binop(op, X(text), value, node.value)
         tmp = self.temp("value")
-        self.hoisted.append(f"{tmp} = {self.wrapped(value).text}")
-        self.store(node.target, X(tmp), len(self.hoisted))
-        return X(tmp)
+        reads = node.op != ":="
+        paid = node.op in ("/", "//")       # (the helper's line is the timed event)
+        self.hoisted.append(self.line(f"{tmp} = {self.wrapped(value).text}",
+                                      reads and (paid or self.store_event(node.target, True))))
+        self.hoisted.append(self.line(f"{text} = {tmp}", self.store_event(node.target, False) and not paid if reads else
+                                      isinstance(node.target, (A.RegRef, A.SprRef))))
+        return X(tmp, saved=True)
 
     def x_PreOp(self, node) -> X:
         return self.pre_op(node)
@@ -392,15 +456,20 @@ class ExprTranslator:
     def pre_op(self, node) -> X:
         if (node.op in ("~", "~~", "?") and self.narrow(node.target)) or isinstance(node.target, A.RegRef):
             # the value is what was computed (a register such as CNT does not keep what is written)
-            old = self.expr(node.target).text
+            old = self.place(node.target, reuse=True)
             new = {"~": f"spin.sign_extend_byte({old})", "~~": f"spin.sign_extend_word({old})",
                    "?": f"spin.random_forward({old})", "++": f"wrap({old} + 1)", "--": f"wrap({old} - 1)"}[node.op]
             tmp = self.temp("value")
-            self.hoisted.append(f"{tmp} = {new}")
-            self.store(node.target, X(tmp), len(self.hoisted))
-            return X(tmp)
-        self.step(node.target, node.op)
-        return self.reread(node.target)
+            self.hoisted.append(self.line(f"{tmp} = {new}", self.store_event(node.target, True)))
+            self.hoisted.append(self.line(f"{old} = {tmp}", self.store_event(node.target)))
+            target = node.target.expr if isinstance(node.target, A.Paren) else node.target
+            if node.op in ("++", "--") and isinstance(target, A.RegRef) and target.bit is not None:
+                kept = self.temp("value")       # ++/-- of a bit field leaves the field as stored
+                self.hoisted.append(f"{kept} = {old}")
+                return X(kept, saved=True)
+            return X(tmp, saved=True)
+        text = self.step(node.target, node.op, reuse=True)
+        return self.reread(node.target, text)
 
     def narrow(self, target) -> bool:
         """Is ``target`` narrower than a long (its stored value may differ from the assigned one)?"""
@@ -416,26 +485,28 @@ class ExprTranslator:
     def x_PostOp(self, node) -> X:
         if node.op == "?":          # x? leaves the new value, like ?x (Propeller Manual, "Random")
             if self.narrow(node.target) or isinstance(node.target, A.RegRef):
+                text = self.place(node.target, reuse=True)
                 tmp = self.temp("value")
-                self.hoisted.append(f"{tmp} = spin.random_reverse({self.expr(node.target).text})")
-                self.store(node.target, X(tmp), len(self.hoisted))
-                return X(tmp)
-            self.step(node.target, node.op, post=True)
-            return self.reread(node.target)
+                self.hoisted.append(self.line(f"{tmp} = spin.random_reverse({text})", self.store_event(node.target, True)))
+                self.hoisted.append(self.line(f"{text} = {tmp}", self.store_event(node.target)))
+                return X(tmp, saved=True)
+            text = self.step(node.target, node.op, post=True, reuse=True)
+            return self.reread(node.target, text)
+        text = self.place(node.target, reuse=True)
         old = self.temp("old_" + _short(node.target))
-        self.hoisted.append(f"{old} = {self.expr(node.target).text}")
-        self.step(node.target, node.op, post=True)
-        return X(old)
+        self.hoisted.append(self.line(f"{old} = {text}", self.store_event(node.target, True)))
+        self.step(node.target, node.op, post=True, text=text, timed=self.store_event(node.target))
+        return X(old, saved=True)
 
-    def reread(self, target) -> X:
-        """The value an assignment leaves: the target read again (longs), else a saved copy."""
+    def reread(self, target, text: str) -> X:
+        """The value an assignment leaves: the target read again (unindexed longs), else a saved copy."""
         if isinstance(target, (A.NameRef, A.ResultRef)) and getattr(target, "index", None) is None:
             kind, sym = self.lookup(getattr(target, "name", "result"), target)
             if kind == "local" or getattr(sym, "size", 4) == 4:
-                return self.expr(target)
+                return X(text)
         tmp = self.temp("value")
-        self.hoisted.append(f"{tmp} = {self.expr(target).text}")
-        return X(tmp)
+        self.hoisted.append(f"{tmp} = {text}")
+        return X(tmp, saved=True)
 
     # ------------------------------------------------------------------ addresses
     def x_AddrOf(self, node) -> X:
@@ -461,49 +532,90 @@ class ExprTranslator:
             return X(f'{self.frame_name}.addr("{self.result_name}", {self.value(t.index)})')
         if isinstance(t, A.MemRef):
             size = t.size
-            base = self.expr(t.base)
             if t.index is None:
-                return base
-            return X(f"{base.paren(9)} + {size} * {self.expr(t.index).paren(10)}", 9, wrapped=False)
+                return self.num(self.expr(t.base))
+            base, index = map(self.num, self.operands([t.base, t.index]))
+            return X(f"{base.paren(9)} + {size} * {index.paren(10)}", 9, wrapped=False)
         if isinstance(t, A.MemberRef):
             return X(_member_addr(self.expr(t).text, t.size), 9, wrapped=False)
         self.unsupported("this address-of (@) form", node)
 
     def x_ObjAddr(self, node) -> X:
-        return X(f"self.object_base() + {self.expr(node.operand).paren(10)}", 9, wrapped=False)
+        return X(f"self.object_base() + {self.num(self.expr(node.operand)).paren(10)}", 9, wrapped=False)
 
     # ------------------------------------------------------------------ lookups
     def x_Lookup(self, node) -> X:
+        """``spin.lookup(i, [a, b, c])``; items Spin might not reach, if they call, assign or pay cycles when
+        they run, are evaluated only when reached (``lambda: self.f(x)``, or a local function for an
+        assignment) and each item is paid as it is reached."""
         items = []
         costs = []
         down = node.name.lower().startswith("lookdown")
+        each = self.lazy_items(node)
+        value = self.value(node.value)
         for item in node.items:
             if isinstance(item, A.Range):
-                items.append(f"spin.span({self.value(item.low)}, {self.value(item.high)})")
-                costs.append(self.lookup_item_cost([item.low, item.high], down, True))
+                text = f"spin.span({self.value(item.low)}, {self.value(item.high)})" if not each else \
+                    f"spin.span({self.lazy(item.low).text}, {self.lazy(item.high).text})"
+                items.append(self.deferred(item, text) if each else text)
+                costs.append(self.lookup_item_cost([item.low, item.high], down, True, each))
             elif isinstance(item, A.Str) and len(self.obj.char_bytes(item.text)) > 1:
                 for b in self.obj.char_bytes(item.text):
                     items.append(str(b))
-                    costs.append(self.lookup_item_cost([A.Number(item.pos, b, str(b))], down, False))
+                    costs.append(self.lookup_item_cost([A.Number(item.pos, b, str(b))], down, False, each))
             else:
-                items.append(self.value(item))
-                costs.append(self.lookup_item_cost([item], down, False))
-        self.pending_lookups.append(costs)
-        return X(f"spin.{node.name.lower()}({self.value(node.value)}, [{', '.join(items)}])")
+                items.append(self.deferred(item, self.wrapped(self.lazy(item)).text) if each else self.value(item))
+                costs.append(self.lookup_item_cost([item], down, False, each))
+        text = f"spin.{node.name.lower()}({value}, [{', '.join(items)}])"
+        self.lookup_costs[text] = self.lookup_row(costs, each)
+        return self.event(X(text), node) if each else X(text)
+
+    def lazy_items(self, node) -> bool:
+        """Must ``node``'s items be evaluated one at a time (one that Spin might not reach calls, assigns or
+        pays cycles when it runs, or the first assigns)?"""
+        return any(self.effects(i).any or self.effects(i).paid for i in node.items[1:]) or \
+            self.effects(node.items[:1]).hoists
+
+    def deferred(self, item, text: str) -> str:
+        """``text`` (an item's value) evaluated only when the lookup reaches it."""
+        e = self.effects(item)
+        if not (e.any or e.paid):
+            return text
+        if text.endswith("()") and text[:-2].isidentifier():
+            return text[:-2]                # a local function already
+        return f"lambda: {text}"
+
+    def lazy(self, node) -> X:
+        """``node`` as Python evaluated only when Python reaches it (a lookup item, a case value).
+
+        Its hoisted statements can't go before the statement that uses it:
+        they go into a local function, written before that statement, whose
+        call is the value (``nonlocal`` names the Python locals it assigns).
+        """
+        outer, self.hoisted = self.hoisted, []
+        mode, self.event_mode = self.event_mode, False     # its events are not the statement's
+        try:
+            x = self.expr(node)
+            body = self.hoisted
+        finally:
+            self.hoisted, self.event_mode = outer, mode
+        if not body:
+            return x
+        name = self.temp("reached")
+        assigned = self.python_locals(self.effects(node).writes)
+        lines = ([f"nonlocal {', '.join(assigned)}"] if assigned else []) + body + [f"return {self.wrapped(x).text}"]
+        self.hoisted.append((f"def {name}():", lines))
+        return X(f"{name}()")
+
+    def python_locals(self, places) -> list:
+        """The Python names of the method's Python locals among ``places`` (order.py)."""
+        names = {0: self.result_name}
+        for sym in self.frame.values():
+            names[sym.offset] = self.names.local(sym.name)
+        return sorted({names[int(p[2:])] for p in places if p.startswith("l:") and int(p[2:]) in names})
 
     def x_Range(self, node):
         self.unsupported("a range outside case or lookup", node)
-
-
-#: built-ins without side effects (reading them twice or not at all changes nothing)
-_PURE_BUILTINS = {"constant", "float", "round", "trunc", "string", "strsize", "strcomp", "cogid",
-                  "clkfreq", "clkmode", "chipver"}
-_EFFECTS = (A.Call, A.ObjCall, A.Assign, A.PreOp, A.PostOp, A.AbortTrap)
-
-
-def _is_plain(x: X) -> bool:
-    t = x.text
-    return t.isidentifier()
 
 
 def _short(target) -> str:

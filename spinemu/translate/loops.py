@@ -12,7 +12,7 @@ Spin                        Python                                          char
                             bounds) or ``while True`` + ``spin.repeat_step`` the loop's ``else:``
 ==========================  ==============================================  ==============================
 
-Jumps are priced short or long from the sizes the compiler gives the body.
+Jumps are priced short or long as the compiler laid them out (the compiled object says).
 """
 from __future__ import annotations
 
@@ -21,6 +21,7 @@ from ..compiler.exprs import USING
 from ..frontend import ast as A
 from ..frontend.ast import key
 from .costs import Op, jump_op, split
+from .exprs import X
 
 
 def assigns(stmts, name: str) -> bool:
@@ -57,25 +58,31 @@ class LoopTranslator:
 
     def s_RepeatForever(self, st) -> tuple:
         line = self.emit("while True:", st)
-        size = self.body_size(st.body)
         _, last = self.loop_block(st.body, _LoopInfo("forever"))
-        self.charge(last, "a", [jump_op(self.T, "JMP", size + 2 > 64)])
+        self.charge(last, "a", [jump_op(self.T, "JMP", self.long_jump(st.pos, "repeat"))])
         return line, line
 
     def s_RepeatCount(self, st) -> tuple:
-        c = self.constant(st.count)
-        n = self.expr(st.count)
-        count = n.text if c is not None and c >= 0 else f"spin.u32({self.value(st.count)})"
-        if self.hoisted:
-            first, _ = self.flush(None, st)
-        else:
-            first = None
-        line = self.emit(f"for _ in range({count}):", st)
-        size = self.body_size(st.body)
-        long_back = size + 2 > 64
         T = self.T
+        c = self.constant(st.count)
+        ops = self.expr_ops(st.count) + [jump_op(T, "TJZ", self.long_jump(st.pos, "repeat n"), False)]
+        data = self.last_data
+        with self.timed_statement(ops) as timed:
+            n = self.expr(st.count)
+            if self.effects(st.count).events and not n.saved:
+                # a call (a register read ...) on a line of its own: paid before it, the rest before the loop
+                tmp = self.temp("count")
+                self.hoisted.append(self.line(f"{tmp} = {n.text}", self.is_event(st.count)))
+                n = X(tmp, wrapped=n.wrapped, boolean=n.boolean, truthy=n.truthy, saved=True)
+        count = n.text if c is not None and c >= 0 else f"spin.u32({self.wrapped(n).text})"
+        first, last = self.emit_hoisted(st)
+        line = self.emit(f"for _ in range({count}):", st)
+        long_back = self.long_jump(st.pos, "repeat n", 1)
         djnz_t, djnz_n = jump_op(T, "DJNZ", long_back, True), jump_op(T, "DJNZ", long_back, False)
-        self.charge(first or line, "b", self.expr_ops(st.count) + [jump_op(T, "TJZ", size + 3 > 63, False)])
+        if first is None:
+            self.charge(line, "b", ops)
+        else:
+            self.charge(line, "b", self.charge_decision(ops, data, first, range(first, last + 1), timed))
         info = _LoopInfo("count", next_ops=[djnz_t])
         with self.holding(4):               # the count stays on the stack while the body runs
             _, last = self.loop_block(st.body, info)
@@ -85,10 +92,9 @@ class LoopTranslator:
 
     def s_RepeatWhile(self, st) -> tuple:
         T = self.T
-        size = self.body_size(st.body)
-        cond_ops = self.expr_ops(st.cond)
+        cond_ops = self.expr_ops(st.cond, st.cond.pos if st.post else None)    # (a post test is at the loop's end)
         if st.post:
-            long_j = size + 3 > 64
+            long_j = self.long_jump(st.cond.pos, "repeat while")
             line = self.emit("while True:", st)
             info = _LoopInfo("post")
             info.emit_next = lambda lead: self._post_test(st, cond_ops, long_j, lead)
@@ -100,9 +106,10 @@ class LoopTranslator:
         j = "JNZ" if st.until else "JZ"
         c = self.cond(st.cond)
         test = (f"not ({c})" if " " in c else f"not {c}") if st.until else c
-        jz_not = jump_op(T, j, size + 3 > 63, False)
-        jz_taken = jump_op(T, j, size + 3 > 63, True)
-        back = jump_op(T, "JMP", size + len(cond_ops) * 2 + 4 > 64)
+        long_j = self.long_jump(st.pos, "repeat while")
+        jz_not = jump_op(T, j, long_j, False)
+        jz_taken = jump_op(T, j, long_j, True)
+        back = jump_op(T, "JMP", self.long_jump(st.pos, "repeat"))
         if self.hoisted or any(o.kind for o in cond_ops):
             line = self.emit("while True:", st)
             self.code.indent += 1
@@ -122,7 +129,7 @@ class LoopTranslator:
             self.charge_add(brk, "b", jz_taken.rest - jz_not.rest)
             if st.body:
                 body_first, last = self.loop_block(st.body, _LoopInfo("while"))
-                self.charge(body_first, "b", post)
+                self.charge(body_first, "b", post, first=True)
             else:                       # ``repeat until x``: the loop is just its test
                 self.charge(iff, "a", post)
                 last = iff
@@ -143,10 +150,9 @@ class LoopTranslator:
         simple = (count is not None and isinstance(var, A.NameRef)
                   and var.index is None and self.lookup(var.name, var)[0] in ("local", "var", "dat")
                   and not assigns(st.body, key(var.name)))
-        size = self.body_size(st.body)
         init = self.piece(lambda: (self.mc.expr(st.start), self.mc.var(var, 1)))
         step_piece = self.piece(lambda: self._step_code(st), inside=True)
-        long_back = size + self.size(lambda: self._step_code(st)) > 64
+        long_back = self.long_jump(st.pos, "repeat from")
         step_ops = self._fix_repeat(step_piece, st, long_back, True)
         exit_ops = self._fix_repeat(step_piece, st, long_back, False)
         delta = exit_ops[-1].rest - step_ops[-1].rest

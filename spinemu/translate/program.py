@@ -35,7 +35,7 @@ from ..frontend.ast import key
 from ..frontend.objects import load_program
 from ..compiler.symbols import MethodSymbol, ObjSymbol, VarSymbol
 from ..compiler.dat import DatSymbol
-from .code import Code
+from .code import Code, docstring_text
 from .costs import price
 from .stmts import MethodTranslator
 
@@ -43,6 +43,11 @@ __all__ = ["TranslateError", "ModuleText", "translate_program"]
 
 _RESERVED_LOCALS = {"self", "spin", "cog", "wrap", "range", "max", "min", "abs", "ord"}
 _RESERVED_ATTRS = {"at", "addr", "object_base", "string", "_pbase", "_vbase", "mro", "spin"}
+
+
+#: the notes of the jumps the compiler makes for statements (compiler/stmts.py)
+_JUMP_NOTES = frozenset(("if", "to end of if", "repeat", "repeat n", "repeat while", "repeat from",
+                         "case value", "case range", "next", "quit"))
 
 
 class TranslateError(SpinError):
@@ -200,14 +205,12 @@ class ObjectTranslator:
         if table is None:
             mc = _StringTracker(self.oc, method)
             buf = mc.compile()
-            info = self.infos[key(method.name)]
-            _spans, end = buf.layout(info.offset)
-            pool = end - sum(len(s) for s in buf.strings)
-            offsets, run = [], pool
-            for s in buf.strings:
-                offsets.append(run)
-                run += len(s)
-            table = {nid: offsets[i] for nid, i in mc.string_index.items()}
+            spans, _end = buf.layout(self.infos[key(method.name)].offset)
+            # each push of a string's address, in the order compiled: the compiler's own pool
+            # addresses (some strings share one, as in OpenSpin: compiler/code.py)
+            pushes = [((sp.data[1] & 0x7F) << 8) | sp.data[2] for sp in spans
+                      if sp.note == "string" and sp.pos is not None]
+            table = {nid: pushes[i] for nid, i in mc.string_index.items()}
             self._strings[key(method.name)] = table
         return table[id(node)]
 
@@ -222,14 +225,26 @@ class ObjectTranslator:
         self._index_spans()
         return bytes(self._bytes.get((pos.line, pos.col), b""))
 
+    def long_jumps_at(self, pos, note: str) -> list:
+        """For each jump the compiler made at ``pos`` with ``note`` ("if", "repeat", "case value" ...), in
+        order: is it the two-byte form?
+
+        Read from the compiled object: a jump's size depends on the layout of
+        everything between it and its target, other jumps included.
+        """
+        self._index_spans()
+        return list(self._jumps.get((pos.line, pos.col, note), ()))
+
     def _index_spans(self) -> None:
         if self._offsets is None:
-            self._offsets, self._bytes = {}, {}
+            self._offsets, self._bytes, self._jumps = {}, {}, {}
             for span in self.cobj.spans:
                 if span.pos is not None and span.data:
                     at = (span.pos.line, span.pos.col)
                     self._offsets.setdefault(at, span.offset)
                     self._bytes.setdefault(at, bytearray()).extend(span.data)
+                    if span.note in _JUMP_NOTES:
+                        self._jumps.setdefault(at + (span.note,), []).append(len(span.data) > 2)
 
     def method_end(self, method) -> int:
         return self.infos[key(method.name)].end
@@ -258,11 +273,12 @@ class ObjectTranslator:
         code = Code(spin)
         cls = self.classes[self.unit.path]
         doc = _file_doc(spin)
-        code.raw('"""' + (doc[0] if doc else os.path.basename(self.unit.path)))
+        base = docstring_text(os.path.basename(self.unit.path))
+        code.raw('"""' + (docstring_text(doc[0]) if doc else base))
         for d in doc[1:]:
-            code.raw(d)
+            code.raw(docstring_text(d))
         code.raw("")
-        code.raw(f"Translated from {os.path.basename(self.unit.path)} by spinemu.translate (generated: do not edit).")
+        code.raw(f"Translated from {base} by spinemu.translate (generated: do not edit).")
         code.raw("Each statement ends with '# L<n>', its Spin source line. Spin longs are signed ints; `wrap`")
         code.raw("keeps a result to 32 bits. `cog` is the cog running the code (cog.OUTA[7:4] is outa[7..4]).")
         code.raw('"""')
@@ -278,7 +294,7 @@ class ObjectTranslator:
         code.raw("")
         code.raw(f"class {cls}(spin.Object):")
         code.indent = 1
-        code.line('"""' + _summary(doc, self.unit.path) + '"""')
+        code.line('"""' + docstring_text(_summary(doc, self.unit.path)) + '"""')
         code.line("")
         code.line(f'SPIN_FIRST_METHOD = "{self.names.attr(self.cobj.methods[0].name)}"'
                   if self.cobj.methods else "SPIN_FIRST_METHOD = None")
@@ -305,7 +321,8 @@ class ObjectTranslator:
         code.raw(f"SPIN_METHODS = {({self.names.attr(m.name): m.index for m in self.cobj.methods})!r}")
         code.raw(f"SPIN_CALL_DEPTHS = {dict(sorted(code.call_depths.items()))!r}")
         if code.lookups:
-            code.raw("# lookup/lookdown lines: cycles per item, of LOOK_DONE, and what a match adds per item")
+            code.raw("# lookup/lookdown lines, each lookup on the line from the left: cycles per item, of")
+            code.raw("# LOOK_DONE, and what a match adds per item")
             code.raw("SPIN_LOOKUPS = {")
             for line, row in sorted(code.lookups.items()):
                 code.raw(f"    {line}: {row!r},")
@@ -376,7 +393,7 @@ class ObjectTranslator:
         code.indent += 1
         doc = _method_doc(self.unit.spin, m)
         if doc:
-            doc = [d.replace('"' * 3, "'" * 3) for d in doc]
+            doc = [docstring_text(d) for d in doc]
             if len(doc) == 1:
                 code.line('"' * 3 + doc[0] + '"' * 3)
             else:
@@ -660,6 +677,13 @@ def translate_program(src_path: str, include_dirs=()):
             visit(child)
 
     visit(top)
+    modules = {}
+    for u in units:
+        other = modules.setdefault(module_name(u.path), u.path)
+        if other != u.path:
+            raise TranslateError(f"'{os.path.basename(other)}' and '{os.path.basename(u.path)}' would both "
+                                 f"become the Python module '{module_name(u.path)}.py'; rename one of them",
+                                 path=u.path)
     classes, used = {}, set()
     for u in units:
         name = class_name(u.path)

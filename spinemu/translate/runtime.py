@@ -95,6 +95,23 @@ def tick_read(k, access, rest: int) -> None:
     RT.pending = rest
 
 
+def then(k, value):
+    """Charge ``k`` (as :func:`tick`, ``None``: nothing) once ``value`` is computed; returns it.
+
+    The weaver writes a case value that calls a method as ``then(k, x == self.f())``.
+    """
+    if k is not None:
+        tick(k)
+    return value
+
+
+def pay_call(k, helper, *args):
+    """Charge ``k`` (as :func:`tick`), then call ``helper`` (one that pays value-dependent cycles, such as
+    ``spin.div``): the weaver's form of such a call after another timed event of its statement."""
+    tick(k)
+    return helper(*args)
+
+
 def add(k: int) -> None:
     """Charge ``k`` cycles that need no alignment (a taken jump's extra cost)."""
     RT.cog.t += k
@@ -288,7 +305,7 @@ def instantiate(cls, mem, pbase: int, vbase: int):
     n_methods = mem[pbase + 2] - 1
     entry = pbase + 4 * (1 + n_methods)
     for name, decl in _children_of(cls):
-        made = []
+        made = ObjectArray(name)
         for _ in range(decl.count):
             child_p = (pbase + int.from_bytes(mem[entry:entry + 2], "little")) & 0xFFFF
             child_v = (vbase + int.from_bytes(mem[entry + 2:entry + 4], "little")) & 0xFFFF
@@ -296,6 +313,51 @@ def instantiate(cls, mem, pbase: int, vbase: int):
             entry += 4
         obj.__dict__[name] = made if decl.count != 1 else made[0]
     return obj
+
+
+class ObjectArray(list):
+    """The instances of an object array (``OBJ b[2] : "child"``).
+
+    An index outside the array is a run-time fault naming the Spin line: the
+    bytecode interpreter calls through whatever object-table entry lies there,
+    which the translation cannot follow (a plain list would raise IndexError,
+    or take ``b[-1]`` for the last instance).
+    """
+
+    __slots__ = ("name",)
+
+    def __init__(self, name: str):
+        super().__init__()
+        self.name = name
+
+    def __getitem__(self, index):
+        if isinstance(index, int) and 0 <= index < len(self):
+            return list.__getitem__(self, index)
+        raise python_fault(f"object index {index} is outside {self.name}[0..{len(self) - 1}]: the bytecode "
+                           "would call through whatever object-table entry lies there, which the Python "
+                           "translation cannot follow")
+
+
+def python_fault(message: str):
+    """An :class:`~spinemu.diagnostics.EmulationError` for the running cog at the Spin line of the
+    innermost translated statement on the call stack (its ``# L<n>`` tag)."""
+    import linecache
+    import re
+    import sys
+
+    from ..diagnostics import EmulationError
+
+    frame = sys._getframe(1)
+    while frame is not None and "SPIN_METHODS" not in frame.f_globals:
+        frame = frame.f_back
+    path = line = None
+    if frame is not None:
+        tag = re.search(r"# L(\d+)", linecache.getline(frame.f_code.co_filename, frame.f_lineno))
+        line = int(tag.group(1)) if tag else None
+        doc = re.search(r"Translated from (.+?) by spinemu\.translate", frame.f_globals.get("__doc__") or "")
+        path = doc.group(1) if doc else None
+    cog = f" (cog {RT.cog.id})" if RT.cog is not None else ""
+    return EmulationError(message + cog, path=path, line=line)
 
 
 def _children_of(cls):
@@ -314,8 +376,9 @@ def run_class(cls, image: bytes, *, max_cycles=None, compat: str = "spinsim", in
     T = load_timing()
     epilogue = T.reg[(0x3F, 0)]        # the ROM's COGID ($3F $89) before COGSTOP
     chip = PythonChip(image, top, epilogue, compat=compat, inputs=inputs)
-    for part in parts:
-        part.attach(chip)
+    if parts:
+        from ..bench import Bench
+        (parts if isinstance(parts, Bench) else Bench(parts)).attach(chip)
     RT.final = _NEVER if max_cycles is None else max_cycles
     result = chip.run(max_cycles)
     result.stats["stacks"] = list(chip.engine.stacks)

@@ -210,74 +210,84 @@ def repeat_step(x: int, start: int, stop: int, step: int = 1) -> tuple:
     return wrap(x), stop <= x <= start
 
 
-def _look_cycles(k) -> None:
-    """Pay what a lookup/lookdown that matched item ``k`` (None: no match) costs beyond the static charge.
+def _search(key: int, items, costs, down: bool) -> tuple:
+    """Spin's lookup/lookdown search: ``(position of the matching value counting from 0, that value)``,
+    ``(None, 0)`` when nothing matches.
 
-    The statement paid for every item and LOOK_DONE; the caller's module lists,
-    per line, each item's cycles, LOOK_DONE's and what a match adds
-    (``SPIN_LOOKUPS``, written by the translator).
+    ``key``: lookup's index counting from 0, or lookdown's value.  An item is a
+    value, a ``range`` (``span``) or a function that gives one (an item Spin
+    evaluates only when it reaches it).  ``costs`` (the weaver passes the row
+    the translator listed for this call in ``SPIN_LOOKUPS``) pays what the
+    statement's static charge left to the search:
+
+    * ``(item cycles, LOOK_DONE's, extra per match)``: every item was paid
+      with the statement; a match gives back the items after it and LOOK_DONE;
+    * ``("each", LOOK_DONE's, ((before, after, extra), ...))``: each item is
+      paid as it is reached (cycles before its call or register read, from
+      there on, what a match adds); a match gives back LOOK_DONE.
     """
-    if RT.T is None or k is None:
-        return
-    import sys
-    caller = sys._getframe(3)
-    row = caller.f_globals.get("SPIN_LOOKUPS", {}).get(caller.f_lineno)
-    if row is None:
-        return
-    items, done, found = row
-    RT.cog.t += found[k] - sum(items[k + 1:]) - done
-
-
-def _look(index: int, items, base: int) -> int:
-    i = index - base
+    T = RT.T if costs is not None else None
+    each = T is not None and costs[0] == "each"
+    if each:
+        from .runtime import tick
+    position = 0
     for k, item in enumerate(items):
-        if isinstance(item, range):
-            if 0 <= i < len(item):
-                _look_cycles(k)
-                return item[i]
-            i -= len(item)
+        if each:
+            before, after, extra = costs[2][k]
+            if before is not None:
+                tick(before)
+        if callable(item):
+            item = item()
+        if each and after is not None:
+            tick(after)
+        if down:
+            if isinstance(item, range):
+                hit = key in item
+                at, value, size = (item.index(key) if hit else 0), key, len(item)
+            else:
+                hit, at, value, size = key == item, 0, item, 1
         else:
-            if i == 0:
-                _look_cycles(k)
-                return item
-            i -= 1
-    return 0
+            # 32-bit arithmetic as the ROM's LOOKUP_RANGE: a range counts (|hi - lo| + 1) & $FFFF_FFFF
+            # items ($8000_0000..$7FFF_FFFF none) and matches when index - position < count, unsigned
+            at = (key - position) & M32
+            if isinstance(item, range):
+                up = item.step > 0
+                lo, hi = item.start, (item.stop - 1 if up else item.stop + 1)
+                size = ((hi - lo if up else lo - hi) + 1) & M32
+                hit = at < size
+                value = wrap(lo + at if up else lo - at) if hit else 0
+            else:
+                hit, value, size = at == 0, item, 1
+        if hit:
+            if each:
+                RT.cog.t += extra - costs[1]
+            elif T is not None:
+                RT.cog.t += costs[2][k] - sum(costs[0][k + 1:]) - costs[1]
+            return position + at, value
+        position = (position + size) & M32
+    return None, 0
 
 
-def lookup(index: int, items) -> int:
+def lookup(index: int, items, costs=None) -> int:
     """Spin ``lookup(i: a, b, c)``: item ``i`` counting from 1, or 0."""
-    return _look(index, items, 1)
+    return _search(index - 1, items, costs, False)[1]
 
 
-def lookupz(index: int, items) -> int:
+def lookupz(index: int, items, costs=None) -> int:
     """Spin ``lookupz(i: a, b, c)``: item ``i`` counting from 0, or 0."""
-    return _look(index, items, 0)
+    return _search(index, items, costs, False)[1]
 
 
-def _find(value: int, items, base: int) -> int:
-    n = base
-    for k, item in enumerate(items):
-        if isinstance(item, range):
-            if value in item:
-                _look_cycles(k)
-                return n + item.index(value)
-            n += len(item)
-        else:
-            if value == item:
-                _look_cycles(k)
-                return n
-            n += 1
-    return 0
-
-
-def lookdown(value: int, items) -> int:
+def lookdown(value: int, items, costs=None) -> int:
     """Spin ``lookdown(v: a, b, c)``: the position of ``v`` counting from 1, or 0."""
-    return _find(value, items, 1)
+    found = _search(value, items, costs, True)[0]
+    return 0 if found is None else found + 1
 
 
-def lookdownz(value: int, items) -> int:
+def lookdownz(value: int, items, costs=None) -> int:
     """Spin ``lookdownz(v: a, b, c)``: the position of ``v`` counting from 0, or 0."""
-    return _find(value, items, 0)
+    found = _search(value, items, costs, True)[0]
+    return 0 if found is None else found
 
 
 def span(low: int, high: int) -> range:
@@ -617,12 +627,17 @@ def left_on_stack(*offsets):
     return values[0] if len(values) == 1 else values
 
 
-def call_at(depth: int, method, *args, **kwargs):
+def call_at(depth: int, method, *args, spin_pay=None, **kwargs):
     """Call a translated method whose frame starts ``depth`` stack bytes above its caller's.
 
     The weaver wraps the calls of a line whose calls start at different
     depths (``f(g(x), g(y))``) with this, so :func:`_frame_base` finds each one's.
+    ``spin_pay``: cycles (a run of bytecodes) to pay before the call starts:
+    in a statement with several calls, the bytecodes since the call before.
     """
+    if spin_pay is not None and RT.T is not None:
+        from .runtime import tick
+        tick(spin_pay)
     return method(*args, **kwargs)
 
 
@@ -660,6 +675,6 @@ def _frame_base(pyframe) -> int:
         if depth is None:
             depth = g.get("SPIN_CALL_DEPTHS", {}).get(caller.f_lineno, 0)
             if depth.__class__ is list:     # a call the weaver did not wrap: the line's first
-                depth = depth[0][1]
+                depth = next((e[1] for e in depth if e[1] is not None), 0)
         dbase += g["SPIN_FRAME_SIZES"][caller.f_code.co_name] + depth + 8
     return dbase & 0xFFFF

@@ -25,15 +25,15 @@ Costs come from the compiler's own bytecode for each piece (costs.py).
 """
 from __future__ import annotations
 
-import re
 from contextlib import contextmanager
 
 from ..compiler.code import CodeBuffer, Label
 from ..compiler import stmts as cstmts
 from ..frontend import ast as A
 from ..frontend.ast import key
-from .costs import Op, call_depths, ceil16, drop_result_delta, price, jump_op, split, split_read
-from .exprs import ExprTranslator, X
+from .costs import Op, anchor_at, call_depths, ceil16, chain, drop_result_delta, price, jump_op, split, split_read
+from .exprs import Event, ExprTranslator, X
+from .order import _EVENT_BUILTINS, _PAID_BUILTINS, Given
 from .loops import LoopTranslator
 
 __all__ = ["MethodTranslator"]
@@ -57,7 +57,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.method = method
         self.code = code
         self.T = objt.timing
-        self.mc = cstmts.MethodCompiler(self.obj, method)
+        self.mc = _Compiler(self.obj, method)
         self.frame = self.mc.frame
         self.result_name = self.names.local(method.result or "result")
         self.in_frame = needs_hub_frame(method)
@@ -65,7 +65,12 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.hoisted: list = []
         self.loops: list = []
         self.temps: set = set()
-        self.pending_lookups: list = []
+        self.lookup_costs: dict = {}         # the text of each lookup call: what its items cost
+        self.event_mode = False              # one line per timed event (timed_statement)
+        self.placing = False                 # translating an assignment's target (not a read of it)
+        self.top_node = None
+        self.event_lines: list = []
+        self._lazy = None
         self.exits: set = set()             # lines that leave their block (return, raise, break, continue)
         self.last_data = b""
         #: stack bytes the enclosing statements keep while this one runs (a repeat count: 4, a case: 8)
@@ -97,10 +102,30 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
 
     # ------------------------------------------------------------------ costs
     def piece(self, fn, loop_count: bool = False, **kw) -> list:
-        """Price the bytecode the compiler makes for ``fn()`` (a statement or expression)."""
+        """Price the bytecode the compiler makes for ``fn()`` (a statement or expression).
+
+        A lookup whose items are evaluated one by one at run time (see
+        ``x_Lookup``) is priced without its items (laid out, so that addresses
+        keep their size, but left out): the runtime pays each item it reaches.
+        ``last_data``: the bytecode priced (the calls in such items run inside
+        the lookup's search).
+        """
+        self.mc.lazy = frozenset(id(n) for n in self.lazy_lookups())
+        data = self._compiled(fn, loop_count)
+        self.last_data = data
+        return price(self.T, data, **kw)
+
+    def lazy_lookups(self) -> list:
+        """The lookups of this method whose items are evaluated one by one at run time (see ``x_Lookup``)."""
+        if self._lazy is None:
+            self._lazy = [n for n in A.walk(self.method.body) if isinstance(n, A.Lookup) and self.lazy_items(n)]
+        return self._lazy
+
+    def _compiled(self, fn, loop_count: bool) -> bytes:
         mc = self.mc
         saved = mc.code, mc.loops
         mc.code = CodeBuffer()
+        mc.code.pos = self.cur_pos          # (a string's push has a place; the string pool does not)
         nxt, end = Label(), Label()
         mc.loops = [cstmts._Loop(nxt, end, count=loop_count)]
         try:
@@ -111,9 +136,16 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             spans, _ = mc.code.layout(self.objt.offset_of(self.cur_pos, self.method))
         finally:
             mc.code, mc.loops = saved
-        data = b"".join(s.data for s in spans if s.pos is not None or s.note != "string")   # not the pool
-        self.last_data = data
-        return price(self.T, data, **kw)
+        out = []
+        for k, sp in enumerate(spans):
+            if sp.pos is None and sp.note == "string":
+                continue                    # the string pool
+            if sp.pos is _ITEMS:            # a lookup item paid at run time; the lookup's own LOOK_DONE stays
+                last = k + 1 == len(spans) or spans[k + 1].pos is not _ITEMS
+                if not (last and sp.data == b"\x0f"):
+                    continue
+            out.append(sp.data)
+        return b"".join(out)
 
     def callee(self, data, i: int) -> tuple:
         """``(parameter count, Python name)`` of the method the CALL/CALL_OBJ at ``data[i]`` calls."""
@@ -127,18 +159,38 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                 return len(pubs[method - 1].params), self.names.child_method(sym.name, pubs[method - 1].name)
         return 0, None
 
-    def note_depths(self, lines) -> None:
-        """Record the stack bytes in use at the calls of the piece compiled last, for ``lines``.
+    def note_depths(self, lines, data: bytes = None, runs=None, ops=None) -> None:
+        """Record the stack bytes in use at the calls of ``data`` (the piece compiled last), for ``lines``.
 
         One number when every call of the statement starts at the same depth;
         else ``[(method, depth), ...]`` in the order the calls run
         (``f(g(x), g(y))``: g above f's frame, the second g one long higher,
-        then f); the weaver hands each call its own depth.
+        then f); the weaver hands each call its own depth.  ``runs``: the
+        cycles each call after the first pays before it starts (a statement
+        whose timed events are calls: ``[(method, depth, cycles), ...]``);
+        ``ops``: the statement's priced bytecode, whose helper calls that pay
+        cycles (``("@div", None, cycles)``) are listed among the calls.
         """
-        calls = call_depths(self.last_data, self.callee)
+        calls = call_depths(self.last_data if data is None else data, self.callee)
+        if runs is not None and ops is not None:
+            listed, found = [], iter(calls)
+            for o in ops:
+                if o.kind == "call":
+                    d, name = next(found, (0, None))
+                    listed.append((name, d + self.held))
+                elif o.kind == "paid":
+                    listed.append(("@" + o.helper, None))
+            if len(runs) == len(listed):
+                depth = [(name, d, run) for (name, d), run in zip(listed, runs)]
+                for line in lines:
+                    if line is not None:
+                        self.code.call_depths[line] = depth
+                return
         if not calls:
             return
-        if all(d == calls[0][0] for d, _ in calls):
+        if runs is not None and len(runs) == len(calls):
+            depth = [(name, d + self.held, run) for (d, name), run in zip(calls, runs)]
+        elif all(d == calls[0][0] for d, _ in calls):
             depth = calls[0][0] + self.held if calls[0][0] + self.held else None
         else:
             depth = [(name, d + self.held) for d, name in calls]
@@ -147,56 +199,77 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                 if line is not None:
                     self.code.call_depths[line] = depth
 
-    def size(self, fn) -> int:
-        mc = self.mc
-        saved = mc.code, mc.loops
-        mc.code = CodeBuffer()
-        nxt, end = Label(), Label()
-        mc.loops = [cstmts._Loop(nxt, end)]
+    def expr_ops(self, node, at=None) -> list:
+        """The priced bytecode of expression ``node``, laid out where the code at ``at`` (a position:
+        a branch, a case value, a loop's test) is, else where the current statement is."""
+        if at is None:
+            return self.piece(lambda: self.mc.expr(node))
+        saved, self.cur_pos = self.cur_pos, at
         try:
-            fn()
-            mc.code.mark(nxt)
-            mc.code.mark(end)
-            start = self.objt.offset_of(self.cur_pos, self.method)
-            _, n = mc.code.layout(start)
+            return self.piece(lambda: self.mc.expr(node))
         finally:
-            mc.code, mc.loops = saved
-        return n - start
+            self.cur_pos = saved
 
-    def body_size(self, stmts) -> int:
-        return self.size(lambda: self.mc.block(stmts))
+    def lookup_item_cost(self, exprs, down: bool, is_range: bool, each: bool = False) -> tuple:
+        """``(cycles of the item, extra cycles when it matches)`` of one lookup/lookdown item.
 
-    def expr_ops(self, node) -> list:
-        return self.piece(lambda: self.mc.expr(node))
-
-    def lookup_item_cost(self, exprs, down: bool, is_range: bool) -> tuple:
-        """``(cycles of the item, extra cycles when it matches)`` of one lookup/lookdown item."""
+        ``each`` (items paid one by one at run time): ``(cycles up to its call
+        or register write, or before its register read, cycles from there on,
+        extra when it matches)``.
+        """
         T = self.T
         ops = [o for e in exprs for o in self.expr_ops(e)]
         name = ("lookdown" if down else "lookup") + ("_range" if is_range else "_value")
         table = getattr(T, name)
+        if each:
+            ops.append(Op(0x10, table[False]))
+            cut = next((k + (o.kind in ("call", "write")) for k, o in enumerate(ops)
+                        if o.kind in ("call", "write", "read", "look")), len(ops))
+            return chain(ops[:cut]), chain(ops[cut:]), table[True] - table[False]
         found, missed = ceil16(table[True] + 12), ceil16(table[False] + 12)
         return sum(ceil16(o.rest + 12) for o in ops) + missed, found - missed
 
-    def charge(self, line: int, slot: str, ops) -> None:
-        """Charge ``ops`` at ``slot`` of ``line``; nothing runs after a return, abort, next or quit."""
+    def lookup_row(self, costs: list, each: bool) -> tuple:
+        """A lookup's row of ``SPIN_LOOKUPS`` (see spinemu.translate.spin.lookup)."""
+        done = ceil16(self.T.look_done + 12)
+        if each:
+            return ("each", done, tuple(costs))
+        return ([c for c, _ in costs], done, [f for _, f in costs])
+
+    def long_jump(self, pos, note: str, k: int = 0) -> bool:
+        """Is the ``k``-th jump the compiler made at ``pos`` with ``note`` the two-byte form (compiled object)?"""
+        found = self.objt.long_jumps_at(pos, note)
+        return found[k] if k < len(found) else False
+
+    def charge(self, line: int, slot: str, ops, first: bool = False) -> None:
+        """Charge ``ops`` at ``slot`` of ``line``; nothing runs after a return, abort, next or quit.
+
+        ``first``: before what the line pays already (see ``Code.charge``).
+        """
         if line is not None and ops and not (slot == "a" and line in self.exits):
-            self.code.charge(line, slot, list(ops))
+            self.code.charge(line, slot, list(ops), first)
 
     def charge_add(self, line: int, slot: str, cycles: int) -> None:
         if line is not None and cycles and not (slot == "a" and line in self.exits):
             self.code.charge_add(line, slot, cycles)
 
     # ------------------------------------------------------------------ emitting
-    def emit(self, text: str, node=None) -> int:
+    def emit(self, text, node=None) -> int:
+        """Write one line (or a hoisted block: ``(header, [lines or blocks])``); its (first) line number."""
+        if isinstance(text, tuple):
+            header, body = text
+            first = self.emit(header, node)
+            self.code.indent += 1
+            for item in body:
+                self.emit(item, node)
+            self.code.indent -= 1
+            return first
         line = self.code.line(text, node.pos.line if node is not None else None)
         if self.held:                       # a call at the start of this line: above what the enclosing statements hold
             self.code.call_depths.setdefault(line, self.held)
-        for _ in range(text.count("spin.look")):
-            if self.pending_lookups:                # what each lookup item costs, for the runtime
-                costs = self.pending_lookups.pop(0)
-                self.code.lookups[line] = ([c for c, _ in costs], ceil16(self.T.look_done + 12),
-                                           [f for _, f in costs])
+        rows = [self.lookup_costs[call] for call in _lookup_calls(text)]   # for the runtime, left to right
+        if rows:
+            self.code.lookups[line] = rows
         return line
 
     def block(self, stmts) -> tuple:
@@ -204,11 +277,11 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.code.indent += 1
         first = last = None
         try:
-            if not stmts:
-                first = last = self.emit("pass")
             for st in stmts:
                 f, last = self.statement(st)
                 first = first or f
+            if first is None:                   # no statements, or none that writes a line
+                first = last = self.emit("pass")
         finally:
             self.code.indent -= 1
         return first, last
@@ -220,46 +293,87 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         return method(st)
 
     def flush(self, main, node) -> tuple:
-        """Emit the hoisted lines and ``main`` (a line or None); ``(first, last)``."""
+        """Emit the hoisted lines and ``main`` (a line or None); ``(first, last)``.
+
+        ``self.event_lines`` gets the numbers of the lines that make a timed
+        event (``Event`` lines, see :meth:`timed_statement`), in order.
+        """
         lines = self.hoisted + ([main] if main else [])
         self.hoisted = []
         first = last = None
+        self.event_lines = []
         for text in lines:
             last = self.emit(text, node)
             first = first or last
-
+            if isinstance(text, Event):
+                self.event_lines.append(last)
         if first is None:
             first = last = self.emit("pass", node)
         return first, last
+
+    @contextmanager
+    def timed_statement(self, ops, top=None):
+        """Translate a statement whose bytecodes ``ops`` have several timed events, one line per event.
+
+        One charge before a statement and one after its call (or read) place
+        one event at its cycle.  A statement with more (``x := f(a) + g(b)``,
+        ``outa := ina + f(x)``, two register reads) is written with each event
+        on a line of its own (``value = self.f(a)``), in Spin's order, and
+        each line pays the bytecodes from the event before it (see
+        :meth:`charge_events`).  ``top``: the statement's own expression when
+        it is an event itself (a call as a statement): it stays on the last line.
+        """
+        saved = self.event_mode, self.top_node
+        self.event_mode = not _one_event(ops) and not _calls_only(ops)
+        self.top_node = top
+        try:
+            yield self.event_mode
+        finally:
+            self.event_mode, self.top_node = saved
+
+    def charge_events(self, ops, first: int, last: int) -> bool:
+        """Charge a statement written by :meth:`timed_statement`: each event line pays the bytecodes since
+        the event before it, what follows the last event is paid after it.  False if the lines do not
+        match the events (the caller charges the statement as one)."""
+        runs, kinds = _segments(ops)
+        lines = self.event_lines
+        if len(lines) != len(kinds) or not lines:
+            return False
+        for line, run in zip(lines, runs):
+            self.charge(line, "b", run)
+        if lines[-1] == last:
+            # after a write: after the line; after a call, read or lookup: before the store or return
+            self.charge(last, "a" if kinds[-1] == "write" else "p", runs[-1])
+        else:
+            self.charge(lines[-1] + 1, "b", runs[-1])
+        return True
 
     # ------------------------------------------------------------------ simple statements
     def s_ExprStmt(self, st) -> tuple:
         e = st.expr
         t = type(e)
         main = None
-        if t is A.Assign:
-            self.assign(e)
-        elif t is A.PreOp:
-            self.step(e.target, e.op)
-        elif t is A.PostOp:
-            self.step(e.target, e.op, post=True)
-        elif t is A.Unary and isinstance(e.operand, A.VARIABLE_NODES) and self.constant(e) is None:
-            self.unary_assign(e)
-        elif t is A.AbortTrap:
-            main = self.expr(e).text[:-1] + ", keep_result=False)"
-        else:
-            main = self.expr(e).text
         ops = self.piece(lambda: self.mc.block([st]), run_params=self.run_params(st))
-        pre, post = split(ops)
-        pre, mid = split_read(pre)
+        data = self.last_data
+        with self.timed_statement(ops, top=e) as timed:
+            if t is A.Assign:
+                self.assign(e)
+            elif t is A.PreOp:
+                self.step(e.target, e.op)
+            elif t is A.PostOp:
+                self.step(e.target, e.op, post=True)
+            elif t is A.Unary and isinstance(e.operand, A.VARIABLE_NODES) and self.constant(e) is None:
+                self.unary_assign(e)
+            elif t is A.AbortTrap:
+                main = self.expr(e).text[:-1] + ", keep_result=False)"
+            else:
+                main = self.expr(e).text
+            if timed and main is not None and self.is_event(e):
+                main = Event(main)
         first, last = self.flush(main, st)
-        self.note_depths(range(first, last + 1))
-        self.charge(first, "b", pre)
-        if mid:
-            self.code.charge_mid(first, mid)
+        self.charge_statement(ops, data, first, last, timed)
         if t in (A.Call, A.ObjCall) or (t is A.NameRef and main):
             self.charge_add(last, "p", drop_result_delta(self.T))
-        self.charge(last, "p", post)
         return first, last
 
     def run_params(self, st) -> int:
@@ -276,31 +390,98 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         return f"{self.frame_name}.{self.result_name}" if self.in_frame else self.result_name
 
     def s_Return(self, st) -> tuple:
-        if st.value is None:
-            main = f"return {self.result_text()}" if self.objt.uses_result(self.method) else "return"
-        else:
-            main = f"return {self.value(st.value)}"
-        return self.ending(st, main)
+        ops = self.piece(lambda: self.mc.block([st]))
+        data = self.last_data
+        with self.timed_statement(ops, top=st.value) as timed:
+            if st.value is None:
+                main = f"return {self.result_text()}" if self.objt.uses_result(self.method) else "return"
+            else:
+                main = f"return {self.value(st.value)}"
+            if timed and st.value is not None and self.is_event(st.value):
+                main = Event(main)
+        return self.ending(st, main, ops, data, timed)
 
     def s_Abort(self, st) -> tuple:
-        if st.value is not None:
-            return self.ending(st, f"raise spin.Abort({self.value(st.value)})")
-        value = self.result_text() if self.objt.uses_result(self.method) else "0"
-        return self.ending(st, f"raise spin.Abort({value}, bare=True)")
-
-    def ending(self, st, main) -> tuple:
-        """``return``/``abort``: what comes after a call in the value is paid after the value (weave.py)."""
         ops = self.piece(lambda: self.mc.block([st]))
+        data = self.last_data
+        with self.timed_statement(ops, top=st.value) as timed:
+            if st.value is not None:
+                main = f"raise spin.Abort({self.value(st.value)})"
+                if timed and self.is_event(st.value):
+                    main = Event(main)
+                return self.ending(st, main, ops, data, timed)
+        value = self.result_text() if self.objt.uses_result(self.method) else "0"
+        return self.ending(st, f"raise spin.Abort({value}, bare=True)", ops, data, False)
+
+    def ending(self, st, main, ops, data, timed: bool) -> tuple:
+        """``return``/``abort``: what comes after a call in the value is paid after the value (weave.py)."""
         first, last = self.flush(main, st)
-        self.note_depths(range(first, last + 1))
+        self.charge_statement(ops, data, first, last, timed)
+        self.exits.add(last)
+        return first, last
+
+    def emit_hoisted(self, node) -> tuple:
+        """Emit the hoisted lines (before a condition); ``(first line or None, last line or None)``;
+        ``self.event_lines`` gets the ``Event`` lines."""
+        first = last = None
+        self.event_lines = []
+        for h in self.hoisted:
+            last = self.emit(h, node)
+            first = first or last
+            if isinstance(h, Event):
+                self.event_lines.append(last)
+        self.hoisted = []
+        return first, last
+
+    def charge_decision(self, ops, data, first: int, lines, timed: bool) -> list:
+        """Charge the bytecodes ``ops`` of a value Python decides on (a condition and its jump, a case
+        selector, a repeat count), written on ``lines`` (``first`` the first of them); returns the run
+        to pay once it is decided (where each way goes on).  As :meth:`charge_statement`."""
+        runs, kinds = _segments(ops)
+        if timed and len(self.event_lines) == len(kinds) and self.event_lines:
+            for line, run in zip(self.event_lines, runs):
+                self.charge(line, "b", run)
+            self.note_depths(lines, data)
+            return runs[-1]
+        if not _one_event(ops) and _calls_only(ops):
+            self.charge(first, "b", runs[0])
+            self.note_depths(lines, data, [None] + [chain(r) for r in runs[1:-1]], ops)
+            return runs[-1]
+        self.note_depths(lines, data)
+        pre, post = split(ops)
+        pre, mid = split_read(pre)
+        self.charge(first, "b", pre)
+        if mid:
+            self.code.charge_mid(first, mid)
+        return post
+
+    def charge_statement(self, ops, data, first: int, last: int, timed: bool) -> None:
+        """Charge a statement written on lines ``first..last`` (and record where its calls' frames go).
+
+        One timed event (or a register read, then one event): the bytecodes up
+        to it before the first line, the rest before the last line stores or
+        returns (``post``).  Several calls and no other event: the same, and
+        each call after the first pays the bytecodes since the call before it
+        as it starts (the weaver wraps it).  Other events: one line per event
+        (:meth:`timed_statement`, :meth:`charge_events`).
+        """
+        lines = range(first, last + 1)
+        if timed and self.charge_events(ops, first, last):
+            self.note_depths(lines, data)
+            return
+        runs, kinds = _segments(ops)
+        if not _one_event(ops) and _calls_only(ops):
+            self.charge(first, "b", runs[0])
+            self.note_depths(lines, data, [None] + [chain(r) for r in runs[1:-1]], ops)
+            self.charge(last, "p", runs[-1])
+            return
+        self.note_depths(lines, data)
         pre, post = split(ops)
         pre, mid = split_read(pre)
         self.charge(first, "b", pre)
         if mid:
             self.code.charge_mid(first, mid)
         self.charge(last, "p", post)            # paid between the value and leaving (weave.py)
-        self.exits.add(last)
-        return first, last
 
     def s_Next(self, st) -> tuple:
         loop = self.loop_of(st, "next")
@@ -341,27 +522,20 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         return ops
 
     # ------------------------------------------------------------------ assignments
-    def assign(self, node) -> None:
+    def assign(self, node, reuse: bool = False) -> str:
+        """Hoist ``target := value`` (or ``target OP= value``) as a statement; the target's text.
+
+        Spin computes the value, then the target's index, then (``OP=``) reads
+        the target; the value is saved first where Python's order would differ
+        (order.py).  ``reuse``: the target is read again for the expression's value.
+        """
         target = node.target
         value = self.expr(node.value)
         mark = len(self.hoisted)
         if node.op == ":=":
-            self.store(target, value, mark)
-            return
+            return self.store(target, node.value, value, mark, reuse)
         op = node.op.upper() if node.op.isalpha() else node.op
-        self.store_op(target, op, value, mark)
-
-    def target_text(self, target, value: X, mark: int):
-        """The target as an assignment target; saves ``value`` first if the target hoists code."""
-        before = len(self.hoisted)
-        text = self.expr(target).text
-        written = [h.split(" ")[0] for h in self.hoisted[before:]]
-        if (any(w in value.text for w in written) or (written and _has_call(value.text))) and value.const is None \
-                and not value.text.isidentifier():
-            tmp = self.temp("value")
-            self.hoisted.insert(mark, f"{tmp} = {value.text}")
-            value = X(tmp, wrapped=value.wrapped, boolean=value.boolean)
-        return text, value
+        return self.store_op(target, op, node.value, value, mark, reuse)
 
     def is_local(self, target) -> bool:
         """Is ``target`` a Python local (stores must wrap to 32 bits themselves)?"""
@@ -371,30 +545,50 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             return True
         return isinstance(target, A.NameRef) and key(target.name) in self.frame
 
-    def store(self, target, value: X, mark: int) -> None:
-        text, value = self.target_text(target, value, mark)
+    def store(self, target, value_node, value: X, mark: int, reuse: bool = False) -> str:
+        text = self.place(target, reuse)
+        value = self.value_first(value_node, value, target, mark, reuse)
+        register = isinstance(target.expr if isinstance(target, A.Paren) else target, (A.RegRef, A.SprRef))
         if self.is_local(target):
             self.hoisted.append(f"{text} = {self.wrapped(value).text}")
         else:
             v = self.wrapped(value).text if value.boolean else value.text
-            self.hoisted.append(f"{text} = {v}")
+            self.hoisted.append(self.line(f"{text} = {v}", register))
+        return text
 
-    def store_op(self, target, op: str, value: X, mark: int) -> None:
-        text, value = self.target_text(target, value, mark)
+    def store_op(self, target, op: str, value_node, value: X, mark: int, reuse: bool = False) -> str:
         local = self.is_local(target)
-        if op in _PY_AUG and not local and not value.boolean:
-            self.hoisted.append(f"{text} {op}= {value.text}")
-            return
-        new = self.binop(op, X(text), value)
-        self.hoisted.append(f"{text} = {(self.wrapped(new) if local or new.boolean else new).text}")
+        aug = op in _PY_AUG and not local and not value.boolean
+        text = self.place(target, reuse or not aug)
+        value = self.value_first(value_node, value, target, mark, reuse or not aug, reads_target=True)
+        register = isinstance(target.expr if isinstance(target, A.Paren) else target, (A.RegRef, A.SprRef)) \
+            or op in ("/", "//")            # (the line whose helper pays the division is the timed event)
+        if aug:
+            self.hoisted.append(self.line(f"{text} {op}= {value.text}", register))
+            return text
+        new = self.binop(op, X(text), value, value_node)
+        self.hoisted.append(self.line(f"{text} = {(self.wrapped(new) if local or new.boolean else new).text}", register))
+        return text
 
-    def binop(self, op: str, left: X, right: X) -> X:
-        """``left OP right`` for already translated operands (assignment operators)."""
-        return self.x_Binary(A.Binary(None, op, _Given(None, left), _Given(None, right)))
+    def binop(self, op: str, left: X, right: X, right_node=None) -> X:
+        """``left OP right`` for already translated operands (assignment operators; ``right_node``: the
+        Spin value ``right`` comes from)."""
+        return self.x_Binary(A.Binary(None, op, Given(None, left), Given(None, right, right_node)))
 
-    def step(self, target, op: str, post: bool = False) -> None:
-        text, _ = self.target_text(target, X("0"), len(self.hoisted))
+    def step(self, target, op: str, post: bool = False, reuse: bool = False, text: str = None,
+             timed: bool = None) -> str:
+        """Hoist ``++x``/``x++``/``~x``/``x~``/``?x``/``x?`` on ``target`` as a statement; the target's text.
+
+        ``text``: the target placed already (``x++`` read its old value first);
+        ``timed``: is this line the timed event (default: if ``target`` is a register).
+        """
         local = self.is_local(target)
+        if timed is None:
+            timed = isinstance(target.expr if isinstance(target, A.Paren) else target, (A.RegRef, A.SprRef))
+        if text is None:        # T = f(T) reads the target in the same statement that writes it
+            twice = op == "?" or op in ("~", "~~") and not post
+            text = self.place(target, reuse or twice)
+        mark = len(self.hoisted)
         if op in ("++", "--"):
             sign = "+" if op == "++" else "-"
             self.hoisted.append(f"{text} = wrap({text} {sign} 1)" if local else f"{text} {sign}= 1")
@@ -407,18 +601,24 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             self.hoisted.append(f"{text} = spin.{fn}({text})")
         else:
             self.unsupported(f"the operator {op}", target)
+        if timed:
+            self.hoisted[mark] = self.line(self.hoisted[mark], True)
+        return text
 
     def unary_assign(self, e) -> None:
         """``-x``, ``!x``, ``||x`` ... written as a statement: Spin changes ``x`` in place."""
-        text, _ = self.target_text(e.operand, X("0"), len(self.hoisted))
-        new = self.wrapped(self.x_Unary(A.Unary(e.pos, e.op, _Given(e.pos, X(text)))))
-        self.hoisted.append(f"{text} = {new.text}")
-
-    def x__Given(self, node) -> X:
-        return node.x
+        text = self.place(e.operand, reuse=True)
+        new = self.wrapped(self.x_Unary(A.Unary(e.pos, e.op, Given(e.pos, X(text)))))
+        register = isinstance(e.operand.expr if isinstance(e.operand, A.Paren) else e.operand, (A.RegRef, A.SprRef))
+        self.hoisted.append(self.line(f"{text} = {new.text}", register))
 
     # ------------------------------------------------------------------ builtins
     def x_Builtin(self, node) -> X:
+        x = self.builtin_x(node)
+        name = node.name.lower()
+        return self.event(x, node) if name in _EVENT_BUILTINS or name in _PAID_BUILTINS else x
+
+    def builtin_x(self, node) -> X:
         name = node.name.lower()
         args = node.args or []
         if name in ("constant", "float", "round", "trunc"):
@@ -434,7 +634,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                   "strcomp", "bytefill", "wordfill", "longfill", "bytemove", "wordmove", "longmove",
                   "clkset", "waitvid")
         if name in simple:
-            return X(f"spin.{name}({', '.join(self.value(a) for a in args)})")
+            return X(f"spin.{name}({', '.join(self.wrapped(x).text for x in self.operands(args))})")
         if name in ("locknew", "cogid", "clkfreq", "clkmode", "reboot"):
             return X(f"spin.{name}()")
         if name == "chipver":
@@ -442,16 +642,22 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.unsupported(f"the built-in {node.name}", node)
 
     def cog_start(self, node, name, args) -> X:
+        """``cognew``/``coginit``: Spin evaluates a Spin method's arguments, the stack, then coginit's cog id
+        (Python: the id first); an address (PASM) form in the written order."""
         new = name == "cognew"
         first = args[0] if new else args[1]
         rest = args[1] if new else args[2]
         target = first.expr if isinstance(first, A.Paren) else first
-        head = "" if new else f"{self.value(args[0])}, "
         if isinstance(target, (A.Call, A.NameRef)) and self.lookup(target.name, target)[0] == "method":
             call_args = target.args if isinstance(target, A.Call) else []
-            params = "".join(f", {self.value(a)}" for a in call_args)
-            return X(f"spin.{name}({head}self.{self.names.attr(target.name)}{params}, stack={self.value(rest)})")
-        return X(f"spin.{name}({head}{self.value(first)}, {self.value(rest)}, stack=0)")
+            nodes = list(call_args) + [rest] + ([] if new else [args[0]])
+            xs = [self.wrapped(x).text for x in self.operands(nodes, reorder_after=None if new else len(nodes) - 1)]
+            head = "" if new else f"{xs.pop()}, "
+            stack = xs.pop()
+            params = "".join(f", {x}" for x in xs)
+            return X(f"spin.{name}({head}self.{self.names.attr(target.name)}{params}, stack={stack})")
+        xs = [self.wrapped(x).text for x in self.operands(([] if new else [args[0]]) + [first, rest])]
+        return X(f"spin.{name}({', '.join(xs)}, stack=0)")
 
     # ------------------------------------------------------------------ if
     def s_If(self, st) -> tuple:
@@ -459,34 +665,29 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         last = len(st.branches) - 1
         closers = 0
         for i, br in enumerate(st.branches):
-            c = self.cond(br.cond)
+            j = "JNZ" if br.negate else "JZ"
+            ops = self.expr_ops(br.cond, br.pos) + [jump_op(self.T, j, self.long_jump(br.pos, "if"), taken=False)]
+            data = self.last_data
+            with self.timed_statement(ops) as timed:
+                c = self.cond(br.cond)
             if br.negate:
                 c = f"not ({c})" if " " in c else f"not {c}"
-            hoisted = self.hoisted
-            self.hoisted = []
-            if hoisted and i > 0:
+            if self.hoisted and i > 0:
                 self.emit("else:", br)
                 self.code.indent += 1
                 closers += 1
-            branch_first = None
-            for h in hoisted:
-                ln = self.emit(h, br)
-                branch_first = branch_first or ln
-            word = "if" if i == 0 or hoisted else "elif"
+            branch_first, _ = self.emit_hoisted(br)
+            word = "if" if i == 0 or branch_first else "elif"
             header = self.emit(f"{word} {c}:", br)
             top = top or header
             branch_first = branch_first or header
             first = first or branch_first
-            body_size = self.body_size(br.body)
-            j = "JNZ" if br.negate else "JZ"
-            ops = self.expr_ops(br.cond) + [jump_op(self.T, j, body_size + 3 > 63, taken=False)]
-            pre, post = split(ops)
-            self.charge(branch_first, "b", pre)
+            post = self.charge_decision(ops, data, branch_first, range(branch_first, header + 1), timed)
             body_first, body_last = self.block(br.body)
-            self.charge(body_first, "b", post)
+            self.charge(body_first, "b", post, first=True)
             self.charge(header, "e", post)
             if i < last or st.else_body is not None:
-                self.charge(body_last, "a", [jump_op(self.T, "JMP", False)])
+                self.charge(body_last, "a", [jump_op(self.T, "JMP", self.long_jump(br.pos, "to end of if"))])
         if st.else_body is not None:
             self.code.comments_before(st.else_pos.line if st.else_pos else st.pos.line)
             self.code.line("else:", st.else_pos.line if st.else_pos else None)
@@ -496,34 +697,33 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
 
     # ------------------------------------------------------------------ case
     def s_Case(self, st) -> tuple:
-        sel_x = self.expr(st.value)
+        imm = 1 if self.objt.compiled_at(st.pos)[:1] == b"\x38" else 2     # the end address: PUSH_IMM1 or 2
+        head = [Op(0x37 + imm, self.T.push_imm[imm])] + self.expr_ops(st.value)
+        data = bytes((0x37 + imm,)) + bytes(imm) + self.last_data   # (calls come after the end address push)
+        with self.timed_statement(head) as timed:
+            sel_x = self.expr(st.value)
         sel = self.wrapped(sel_x).text
-        pre_lines = list(self.hoisted)
-        self.hoisted = []
         if not (sel.isidentifier() or sel.startswith("self.") and sel[5:].isidentifier()):
             tmp = self.temp("selector")
-            pre_lines.append(f"{tmp} = {sel}")
+            self.hoisted.append(Event(f"{tmp} = {sel}") if timed and self.is_event(st.value) else f"{tmp} = {sel}")
             sel = tmp
-        first = None
-        for text in pre_lines:
-            ln = self.emit(text, st)
-            first = first or ln
-        if first is not None:               # a call in the selector comes after CASE's end address is pushed
-            self.piece(lambda: self.mc.block([st]))
-            self.note_depths(range(first, ln + 1))
-        end = self.objt.offset_of(st.pos, self.method) + self.body_size([st])
-        imm = 1 if end < 0x100 else 2
-        head = [Op(0x37 + imm, self.T.push_imm[imm])] + self.expr_ops(st.value)
+        first, ln = self.emit_hoisted(st)
+        if first is not None:               # the selector computed on lines of its own: paid there
+            head = self.charge_decision(head, data, first, range(first, ln + 1), timed)
         items = [it for it in st.items if it.values is not None]
         other = next((it for it in st.items if it.values is None), None)
-        jump_long = self.case_jumps(items, other)
         header = top = body_last = None
-        for n, item in enumerate(items):
-            conds, ops, per_value = [], [], []
+        tests = []
+        for item in items:
+            conds, per_value = [], []
+            # is each compare's jump to the body the two-byte form? (as the compiler laid it out)
+            long_values = list(self.objt.long_jumps_at(item.pos, "case value"))
+            long_ranges = list(self.objt.long_jumps_at(item.pos, "case range"))
             for v in item.values:
                 ops = []
                 if isinstance(v, A.Range):
-                    lo, hi = self.value(v.low), self.value(v.high)
+                    # a value Spin reaches only when the ones before it did not match: lazy()
+                    lo, hi = self.wrapped(self.lazy(v.low)).text, self.wrapped(self.lazy(v.high)).text
                     clo, chi = self.constant(v.low), self.constant(v.high)
                     if clo is not None and chi is not None and clo > chi:
                         lo, hi = hi, lo
@@ -531,20 +731,32 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                         conds.append(f"{lo} <= {sel} <= {hi}")
                     else:
                         conds.append(f"spin.within({sel}, {lo}, {hi})")
-                    ops += self.expr_ops(v.low) + self.expr_ops(v.high) + \
-                        [jump_op(self.T, "CASE_RANGE", jump_long[id(v)])]
+                    ops += self.expr_ops(v.low, item.pos) + self.expr_ops(v.high, item.pos) + \
+                        [jump_op(self.T, "CASE_RANGE", long_ranges.pop(0) if long_ranges else False)]
+                    per_value.append(ops)
+                elif isinstance(v, A.Str) and len(self.obj.char_bytes(v.text)) > 1:
+                    for b in self.obj.char_bytes(v.text):   # "abc": one value per character, as compiled
+                        conds.append(f"{sel} == {b}")
+                        per_value.append(self.expr_ops(A.Number(v.pos, b, str(b)), item.pos) + [
+                            jump_op(self.T, "CASE_VALUE", long_values.pop(0) if long_values else False)])
                 else:
-                    conds.append(f"{sel} == {self.value(v)}")
-                    ops += self.expr_ops(v) + [jump_op(self.T, "CASE_VALUE", jump_long[id(v)])]
-                per_value.append(ops)
-            if self.hoisted:
-                self.unsupported("a case value with side effects", item)
+                    conds.append(f"{sel} == {self.wrapped(self.lazy(v)).text}")
+                    ops += self.expr_ops(v, item.pos) + [
+                        jump_op(self.T, "CASE_VALUE", long_values.pop(0) if long_values else False)]
+                    per_value.append(ops)
+            tests.append((conds, per_value))
+        for text in self.hoisted:           # local functions of values that assign (lazy())
+            ln = self.emit(text, st)
+            first = first or ln
+        self.hoisted = []
+        for n, (item, (conds, per_value)) in enumerate(zip(items, tests)):
             cond = " or ".join(conds)
             self.code.comments_before(item.pos.line)
             header = self.emit(f"{'if' if n == 0 else 'elif'} {cond}:", item)
             top = top or header
             first = first or header
-            if len(per_value) == 1:
+            per_value = [_around_event(ops) for ops in per_value]
+            if len(per_value) == 1 and not isinstance(per_value[0], tuple):
                 self.charge(header, "b", (head if n == 0 else []) + per_value[0])
             else:                       # each value is compared only if the ones before it failed
                 self.charge(header, "b", head if n == 0 else [])
@@ -565,27 +777,11 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             self.charge(body_last, "a", [jump_op(self.T, "CASE_DONE")])
         elif header is not None:
             self.charge(header, "e", [jump_op(self.T, "CASE_DONE")])
+        else:                               # no branch at all: the selector, then CASE_DONE
+            body_last = self.emit("pass", st)
+            self.charge(body_last, "b", head + [jump_op(self.T, "CASE_DONE")])
+            first = first or body_last
         return first, top or body_last
-
-    def case_jumps(self, items, other) -> dict:
-        """For each case value: is its jump to the branch body the two-byte form (farther than 63 bytes)?
-
-        Layout (compiler/stmts.py): all compares, the OTHER body and CASE_DONE,
-        then each branch body followed by CASE_DONE.
-        """
-        compares = []                       # (value node, item index, bytes)
-        for k, item in enumerate(items):
-            for v in item.values:
-                exprs = [v.low, v.high] if isinstance(v, A.Range) else [v]
-                size = sum(self.size(lambda e=e: self.mc.expr(e)) for e in exprs) + 2
-                compares.append((v, k, size))
-        bodies = [self.body_size(item.body) + 1 for item in items]
-        other_size = (self.body_size(other.body) if other is not None else 0) + 1
-        result = {}
-        for i, (v, k, _size) in enumerate(compares):
-            after = sum(c[2] for c in compares[i + 1:]) + other_size + sum(bodies[:k])
-            result[id(v)] = after > 63
-        return result
 
     @contextmanager
     def holding(self, n: int):
@@ -602,13 +798,127 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             _, last = self.statement(s)
         return last
 
-_CALL = re.compile(r"\bself\.(?!(?:addr|at|string|object_base)\()\w+(?:\[[^\]]*\])?(?:\.\w+)*\(|"
-                   r"\bspin\.(?:trap|cognew|coginit|lock\w+)\(")
+_ITEMS = object()       # the code position of a lookup's items that the runtime pays (see _Compiler)
 
 
-def _has_call(text: str) -> bool:
-    """Does a translated expression call a method (so that Spin's evaluation order matters)?"""
-    return bool(_CALL.search(text))
+class _Compiler(cstmts.MethodCompiler):
+    """The compiler's method compiler, used to price pieces of a method.
+
+    The items of the lookups in ``lazy`` (ids of nodes) are compiled with the
+    code position ``_ITEMS`` (from the end of the lookup's value up to its
+    LOOK_DONE), so that the translator can leave them out of a statement's
+    price but still lay them out where they are.
+    """
+
+    lazy = frozenset()
+
+    def x_Lookup(self, node) -> None:
+        if id(node) not in self.lazy:
+            return super().x_Lookup(node)
+        code, pos = self.code, self.code.pos
+        had = "expr" in self.__dict__           # a lookup around this one watches its own value
+        inner = self.expr
+
+        def expr(n):
+            inner(n)
+            if n is node.value:
+                code.pos = _ITEMS
+
+        self.expr = expr
+        try:
+            super().x_Lookup(node)
+        finally:
+            if had:
+                self.expr = inner
+            else:
+                del self.expr
+            code.pos = pos
+
+
+def _around_event(ops):
+    """A case value's compare: its ops, or ``(before, after)`` its last call, register write or read when
+    the value has one (paid before the value and once it is computed, before the compare)."""
+    for j in range(len(ops) - 1, -1, -1):
+        if ops[j].kind in ("call", "write", "read", "look"):
+            cut = j + 1 if ops[j].kind in ("call", "write") else j
+            return (ops[:cut], ops[cut:])
+    return ops
+
+
+def _events(ops) -> list:
+    return [o.kind for o in ops if o.kind]
+
+
+def _calls_only(ops) -> bool:
+    """Are the timed events of ``ops`` all calls of methods or of helpers that pay cycles (the weaver
+    pays each one's run as it starts: ``call_at(..., spin_pay=k)``, ``pay_call(k, spin.div, a, b)``)?"""
+    return all(k in ("call", "paid") for k in _events(ops))
+
+
+def _one_event(ops) -> bool:
+    """Can one charge before and one after place every timed event of ``ops`` (costs.split, split_read)?
+
+    Yes for one event, and for a register read followed by one other event
+    (the read pays from itself up to the other, as in ``waitcnt(cnt + x)``),
+    with any bytecodes a helper pays (a division) before the charge's cut.
+    """
+    j = anchor_at(ops)
+    if j is None:
+        return True
+    if any(o.kind == "paid" for o in ops[j + 1:]):
+        return False            # a helper would add its cycles before the charge after the anchor is paid
+    kinds = [k for k in _events(ops) if k != "paid"]
+    return len(kinds) <= 1 or len(kinds) == 2 and kinds[0] == "read" and kinds[1] != "read"
+
+
+def _segments(ops) -> tuple:
+    """``(runs, kinds)``: ``ops`` cut at each timed event: a call, a register write or a bytecode a helper
+    pays (a division) after its bytecode (the callee runs, the pins change, the helper adds its cycles,
+    at its end), a register read, a wait, a cog start or stop or a
+    lookup paid item by item before it; ``runs`` has one run more than ``kinds``.  Waits are paid by
+    their helper."""
+    runs, kinds, run = [], [], []
+    for o in ops:
+        if o.kind in ("call", "write", "paid"):
+            run.append(o)
+            runs.append(run)
+            run = []
+        elif o.kind:
+            runs.append(run)
+            run = [] if o.kind == "wait" else [o]
+        else:
+            run.append(o)
+        if o.kind:
+            kinds.append(o.kind)
+    runs.append(run)
+    return runs, kinds
+
+
+def _lookup_calls(text: str) -> list:
+    """The ``spin.lookup(...)``-like calls in a line of Python, left to right by where they start."""
+    opened, calls, quote, i = [], [], None, 0     # opened: (start of a call or None, its paren depth)
+    depth = 0
+    while i < len(text):
+        ch = text[i]
+        if quote:
+            if ch == "\\":
+                i += 1
+            elif ch == quote:
+                quote = None
+        elif ch in "'\"":
+            quote = ch
+        elif text.startswith("spin.look", i):
+            opened.append((i, depth + 1))
+            i = text.index("(", i) - 1
+        elif ch == "(":
+            depth += 1
+        elif ch == ")":
+            if opened and opened[-1][1] == depth:
+                start, _ = opened.pop()
+                calls.append((start, text[start:i + 1]))
+            depth -= 1
+        i += 1
+    return [c for _, c in sorted(calls)]
 
 
 def needs_hub_frame(method) -> bool:
@@ -630,11 +940,3 @@ def needs_hub_frame(method) -> bool:
         if isinstance(n, A.MemberRef) and local_ref(n.base):
             return True
     return False
-
-
-class _Given(A.Expr):
-    """An already translated operand (used to reuse operator translation)."""
-
-    def __init__(self, pos, x):
-        self.pos = pos
-        self.x = x

@@ -11,10 +11,16 @@ tracebacks.  This is how pytest rewrites ``assert`` statements: the file you
 read is the file that runs, plus bookkeeping that does not change what it
 computes.
 
+Each ``spin.lookup``-like call gets its row of ``SPIN_LOOKUPS`` (what its
+items cost) as a third argument.
+
 A line whose calls start at different stack depths (``SPIN_CALL_DEPTHS``
 lists ``(method, depth)`` for it) has each call wrapped as
 ``__spin_call_at(depth, method, args...)`` so the callee's hub frame lands
 where the bytecode interpreter puts it (:func:`spinemu.translate.spin.call_at`).
+In a statement with several calls, ``(method, depth, cycles)`` also gives what
+each call after the first pays as it starts (``spin_pay=cycles``): the
+bytecodes since the call before it.
 
 Each charge is ``(aligned, extra)``: ``aligned`` cycles charged with a
 bytecode fetch's hub alignment (:func:`spinemu.translate.runtime.tick`),
@@ -38,6 +44,11 @@ __all__ = ["prepare", "load_package"]
 
 _TICK, _TICK_AT, _TICK_READ, _ADD = "__spin_tick", "__spin_tick_at", "__spin_tick_read", "__spin_add"
 _CALL_AT = "__spin_call_at"
+_THEN = "__spin_then"
+_PAY_CALL = "__spin_pay_call"
+#: spin helpers that pay cycles depending on values (costs.PAID_HELPERS)
+_PAID_HELPERS = frozenset(("div", "mod", "encode", "strsize", "strcomp", "bytefill", "wordfill", "longfill",
+                           "bytemove", "wordmove", "longmove"))
 
 
 def _call(name, args, anchor):
@@ -64,13 +75,15 @@ def _charge_stmts(charge, anchor) -> list:
     return out
 
 
-def _calls_in_order(stmt) -> list:
-    """The calls in a statement's own expressions (not its body), in the order Python makes them."""
+def _calls_in_order(stmt, lambdas: bool = False) -> list:
+    """The calls in a statement's own expressions (not its body), in the order Python makes them
+    (``lambdas``: also those in a lookup item's lambda, which runs when the lookup reaches it)."""
     out = []
 
     def visit(n):
-        if isinstance(n, ast.stmt) and n is not stmt:
-            return                      # a nested body's statements are lines of their own
+        if isinstance(n, ast.stmt) and n is not stmt or isinstance(n, ast.Lambda) and not lambdas:
+            return                      # a nested body's statements are lines of their own; a lookup item's
+            #                             lambda runs (and pays) on its own
         children = list(ast.iter_child_nodes(n))
         if isinstance(n, ast.Assign):   # the value runs before the targets' indexes
             children = [n.value] + n.targets
@@ -85,6 +98,9 @@ def _calls_in_order(stmt) -> list:
 
 def _method_name(call):
     f = call.func
+    if isinstance(f, ast.Attribute) and isinstance(f.value, ast.Name) and f.value.id == "spin" \
+            and f.attr in _PAID_HELPERS:
+        return "@" + f.attr             # a helper that pays value-dependent cycles (spin.div ...)
     if isinstance(f, ast.Attribute) and f.attr == "trap" and call.args and isinstance(call.args[0], ast.Attribute):
         return call.args[0].attr        # spin.trap(self.f, x): Spin's \f(x)
     return f.attr if isinstance(f, ast.Attribute) else None
@@ -103,41 +119,81 @@ def _wrap_calls(stmt, depths: list, k: int = 0) -> int:
         j = next((j for j in range(k, len(depths)) if depths[j][0] == name), None)
         if j is None:
             continue
+        pay = depths[j][2] if len(depths[j]) > 2 else None      # cycles since the event before
+        if name.startswith("@"):
+            if pay is not None:
+                call.args = [ast.copy_location(ast.Constant(pay), call), call.func] + call.args
+                call.func = ast.copy_location(ast.Name(_PAY_CALL, ast.Load()), call)
+            k = j + 1
+            continue
         call.args = [ast.copy_location(ast.Constant(depths[j][1]), call), call.func] + call.args
         call.func = ast.copy_location(ast.Name(_CALL_AT, ast.Load()), call)
+        if pay is not None:
+            kw = ast.keyword("spin_pay", ast.copy_location(ast.Constant(pay), call))
+            call.keywords.append(ast.copy_location(kw, call))
         k = j + 1
     return k
 
 
-def _weave_body(stmts: list, table: dict, depths: dict) -> list:
+def _add_lookup_costs(stmt, rows: list) -> None:
+    """``spin.lookup(v, items)`` -> ``spin.lookup(v, items, costs)``: each lookup of the line gets its row of
+    ``SPIN_LOOKUPS`` (listed from the left, by where each call starts)."""
+    calls = [c for c in _calls_in_order(stmt, lambdas=True) if isinstance(c.func, ast.Attribute)
+             and c.func.attr in _LOOKUPS and isinstance(c.func.value, ast.Name) and c.func.value.id == "spin"]
+    calls.sort(key=lambda c: c.col_offset)
+    for call, row in zip(calls, rows):
+        call.args.append(ast.copy_location(ast.Constant(_frozen(row)), call))
+
+
+def _frozen(row):
+    return tuple(_frozen(x) for x in row) if isinstance(row, (list, tuple)) else row
+
+
+_LOOKUPS = frozenset(("lookup", "lookupz", "lookdown", "lookdownz"))
+
+
+def _weave_body(stmts: list, table: dict, depths: dict, lookups: dict) -> list:
     out = []
     calls = None                    # (line, its depths, how many its calls used)
     for s in stmts:
         for field in ("body", "orelse", "finalbody"):
             if isinstance(getattr(s, field, None), list) and not isinstance(s, ast.FunctionDef):
-                setattr(s, field, _weave_body(getattr(s, field), table, depths))
+                setattr(s, field, _weave_body(getattr(s, field), table, depths, lookups))
         if isinstance(s, ast.Try):
             for h in s.handlers:
-                h.body = _weave_body(h.body, table, depths)
+                h.body = _weave_body(h.body, table, depths, lookups)
         listed = depths.get(s.lineno)
         if listed.__class__ is list:
             # the next line of one statement (a value hoisted before it) goes on where this one stopped
             going_on = calls is not None and calls[0] == s.lineno - 1 and calls[1] == listed \
                 and calls[2] < len(listed)
             calls = (s.lineno, listed, _wrap_calls(s, listed, calls[2] if going_on else 0))
+        if s.lineno in lookups:
+            _add_lookup_costs(s, lookups[s.lineno])
         row = table.get(s.lineno)
         if row is None:
             out.append(s)
             continue
         before, after, other = row[:3]
         post = row[4] if len(row) > 4 else None
-        if len(row) > 3 and isinstance(s, ast.If) and isinstance(s.test, ast.BoolOp) \
-                and isinstance(s.test.op, ast.Or) and len(s.test.values) == len(row[3]):
-            # one charge before each alternative: ``if tick(a) or x == 1 or tick(b) or x == 2:``
+        alternatives = None
+        if len(row) > 3 and isinstance(s, ast.If):
+            if isinstance(s.test, ast.BoolOp) and isinstance(s.test.op, ast.Or):
+                alternatives = s.test.values
+            elif len(row[3]) == 1:
+                alternatives = [s.test]
+        if alternatives is not None and len(alternatives) == len(row[3]):
+            # one charge before each alternative: ``if tick(a) or x == 1 or tick(b) or x == 2:``; a value
+            # that calls pays the rest once it is computed: ``tick(a) or then(b, x == self.f())``
             values = []
-            for charge, value in zip(row[3], s.test.values):
+            for charge, value in zip(row[3], alternatives):
+                if charge and isinstance(charge[0], tuple):
+                    charge, computed = charge
+                    value = ast.copy_location(ast.Call(ast.Name(_THEN, ast.Load()),
+                                                       [ast.Constant(computed[0]), value], []), value)
                 values += [c.value for c in _charge_stmts(charge, s)] + [value]
-            s.test = ast.copy_location(ast.BoolOp(ast.Or(), values), s.test)
+            test = ast.BoolOp(ast.Or(), values) if len(values) > 1 else values[0]
+            s.test = ast.fix_missing_locations(ast.copy_location(test, s.test))
         elif len(row) > 3 and isinstance(s, ast.While):
             # charged each time the loop's condition is evaluated: ``while tick(...) or cond:``
             charge = _charge_stmts(row[3], s)
@@ -163,8 +219,8 @@ def _weave_body(stmts: list, table: dict, depths: dict) -> list:
     return out
 
 
-def _weave_function(fn: ast.FunctionDef, table: dict, depths: dict) -> ast.FunctionDef:
-    fn.body = _weave_body(fn.body, table, depths)
+def _weave_function(fn: ast.FunctionDef, table: dict, depths: dict, lookups: dict) -> ast.FunctionDef:
+    fn.body = _weave_body(fn.body, table, depths, lookups)
     row = table.get(fn.lineno)
     if row is not None and row[1] is not None:
         fn.body.extend(_charge_stmts(row[1], fn.body[-1]))
@@ -184,13 +240,16 @@ def prepare(cls) -> None:
     module.__dict__[_TICK_READ] = runtime.tick_read
     module.__dict__[_ADD] = runtime.add
     module.__dict__[_CALL_AT] = spin.call_at
+    module.__dict__[_THEN] = runtime.then
+    module.__dict__[_PAY_CALL] = runtime.pay_call
     install(module.__dict__)
     depths = getattr(module, "SPIN_CALL_DEPTHS", {})
+    lookups = getattr(module, "SPIN_LOOKUPS", {})
     for node in tree.body:
         if isinstance(node, ast.ClassDef) and node.name == cls.__name__:
             for item in node.body:
                 if isinstance(item, ast.FunctionDef):
-                    fn = inline_method(_weave_function(item, table, depths), cls)
+                    fn = inline_method(_weave_function(item, table, depths, lookups), cls)
                     code = compile(ast.Module([fn], []), module.__file__, "exec")
                     ns: dict = {}
                     exec(code, module.__dict__, ns)    # defines the woven function (no user strings)

@@ -15,7 +15,7 @@ import random
 import pytest
 
 from spinemu.bench import SerialConsole, UartFormat, decode_uart
-from spinemu.bench.inputs import PinOverride
+from spinemu.bench.board import BenchInputs
 from spinemu.chip import Chip
 from spinemu.chip.inputs import PinStimulus
 from spinemu.compiler import compile_file
@@ -165,7 +165,7 @@ def test_rx_idles_high_while_a_console_is_attached_over_a_pulldown_model(tmp_pat
     SerialConsole().attach(chip)
     result = chip.run()
     assert result.trace.state_at(result.end_cycle - 1)[1] & 3 == 3   # P31 high (console), P7 high (stimulus)
-    assert isinstance(chip.inputs, PinOverride)
+    assert isinstance(chip.inputs, BenchInputs)
 
 
 def test_a_waitpeq_on_rx_wakes_exactly_at_the_start_bit_as_with_an_equal_stimulus(tmp_path):
@@ -239,9 +239,13 @@ def test_bad_send_times_are_refused(kw):
 class FakeEngine:
     """The bench's engine interface, nothing else: pins driven from a waveform of our own."""
 
+    pin_count = 32
+
     def __init__(self, clock_hz):
+        from spinemu.bench.history import TraceHistory
         self.clock_hz = clock_hz
         self.inputs = PinStimulus([], initial=0)
+        self.drive_history = TraceHistory([])
         self.listeners = []
 
     def add_pin_listener(self, listener, interval_cycles=None):

@@ -7,8 +7,9 @@ Usage (needs OpenSpin, spinsim and the Parallax library under /opt/oracles)::
 
 Each case is a small top-level program written here that uses one driver
 from the Parallax library *where it lies* (FullDuplexSerial, Parallax Serial
-Terminal, a PWM driver, Servo32, a frequency synthesiser; nothing of the
-library is copied).  The script compiles it with OpenSpin and with spinemu
+Terminal, PWM drivers, LED drivers (24-channel PWM, a WS2812 strip, 74HC595
+shift registers), Servo32, frequency synthesisers in software and on the
+counters; nothing of the library is copied).  The script compiles it with OpenSpin and with spinemu
 (the images must be identical), runs it for a fixed number of cycles on
 spinsim 0.99 ``-p`` (pins from its instruction log: a write shows at its
 cycle + 4) and on spinemu, and compares the traces by the reference rules
@@ -72,7 +73,55 @@ PUB main
   pwm.Duty(17, 60, 400)
   pwm.Servo(18, 1500)
   waitcnt(cnt + 3_000_000)
-""", 4_000_000, None),
+""", 4_000_000, None),    # software frequency synthesis: eight outputs from one cog, no counters (self-modifying PASM)
+    "freqout_x8": ("Frequency Synthesis & PWM X8/FREQOUT_X8_Demo_-_Archive__Date_2011.07.01__Time_11.00_1",
+                   HEAD + """OBJ
+  freq : "FREQOUT_X8"
+VAR
+  long pins[8], hz[8]
+PUB main
+  longfill(@pins, -1, 8)
+  pins[0] := 8
+  hz[0] := 10_000
+  pins[1] := 9
+  hz[1] := 25_000
+  pins[2] := 10
+  hz[2] := 7_000
+  freq.start(30, @pins, @hz)
+  waitcnt(cnt + 1_500_000)
+""", 1_600_000, None),
+    # LED PWM: 24 channels, 8 bits each, by successive approximation (P0..P23)
+    "pwm_24_led": ("24-channel LED driver with 8 bit per channel PWM/24-channel_PWM_v1.1", HEAD + """OBJ
+  pwm : "24-channel PWM"
+VAR
+  byte level[24]
+PUB main | i
+  repeat i from 0 to 23
+    level[i] := i * 11
+  pwm.start(@level)
+  waitcnt(cnt + 800_000)
+""", 1_000_000, None),
+    # addressable LEDs: a WS2812 strip's 800 kHz bit stream on P5
+    "ws2812_led": ("WS2812 LED Driver modified by Doug Hilton for RadioShack part number 2760249 Tri-LED strip",
+                   HEAD + """OBJ
+  strip : "RadioShack_2760249"
+PUB main
+  strip.start(5, 8)
+  strip.set(0, strip#RED)
+  strip.set(3, strip#CYAN)
+  strip.set(7, $12_34_56)
+  waitcnt(cnt + 600_000)
+""", 800_000, None),
+    # LEDs on 74HC595 shift registers: software PWM per output, shifted out by a PASM cog
+    "hc595_pwm_led": ("74HC595 Regular and MultiPWM Shift Register Driver", HEAD + """OBJ
+  sr : "74HC595_MultiPWM"
+PUB main
+  sr.Start(0, 1, 2)
+  sr.SetPWM(3, 1000, 25)
+  sr.SetPWM(7, 400, 60)
+  sr.High(12)
+  waitcnt(cnt + 1_500_000)
+""", 1_600_000, None),
 }
 
 #: drivers built on the counter modules, which spinsim does not have: checked against what
@@ -197,6 +246,7 @@ def run_case(name: str, folder: str, program: str, cycles: int, uart) -> bool:
     result = Chip(image).run(max_cycles=cycles)
     t_ours = time.perf_counter() - t0
     cand = PinTrace(CLOCK, [c for c in result.trace.changes if c[0] <= cycles])
+    ref = PinTrace(CLOCK, [c for c in ref.changes if c[0] <= cycles])     # a write at the limit shows 4 later
     cmp = compare_traces(ref, cand)
     rate = result.stats["pasm_instructions"] / t_ours if t_ours else 0
     print(f"{name}: {len(ref.changes)} pin changes on spinsim, {len(cand.changes)} on spinemu; "

@@ -20,7 +20,7 @@ IMAGES = ROOT / "tests" / "data" / "examples"
 QUARTER = 20_000_000                    # clkfreq / 4 at 80 MHz
 
 
-@pytest.mark.parametrize("name", ["blink", "two_cogs", "knight_rider", "serial_hello", "serial_echo"])
+@pytest.mark.parametrize("name", ["blink", "two_cogs", "knight_rider", "serial_hello", "serial_echo", "bench_demo"])
 def test_an_example_compiles_to_openspins_image(name):
     assert compile_file(str(EXAMPLES / f"{name}.spin")).binary == (IMAGES / f"{name}.binary").read_bytes()
 

@@ -104,9 +104,11 @@ def test_a_missing_console_in_file_is_named():
     assert "no_such_file.txt" in err and "cannot read" in err
 
 
-def test_console_options_on_a_basic_stamp_program_are_refused():
+def test_the_console_on_a_basic_stamp_program_needs_pins_it_has():
     code, out, err = run("run", ROOT / "spin_src" / "bs2" / "stepper_bs2.bs2", "--console")
-    assert code == 2 and "Propeller programs" in err
+    assert code == 2 and "--console-pins" in err
+    code, out, err = run("run", ROOT / "spin_src" / "bs2" / "stepper_bs2.bs2", "--console", "--console-pins", "15,31")
+    assert code == 2 and "pins 0..15" in err
 
 
 def test_run_help_describes_the_console():

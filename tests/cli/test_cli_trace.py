@@ -78,3 +78,40 @@ def test_disasm_of_a_corrupt_image_is_an_error(tmp_path):
     bad.write_bytes(b"\x00" * 8)
     code, _, err = run("disasm", str(bad))
     assert code == 1 and "bad.binary" in err and "Traceback" not in err
+
+
+def _step_dir_log(tmp_path, gaps):
+    lines, now = ["0 00000003 00000002"], 1000
+    for g in gaps:
+        now += g
+        lines += [f"{now} 00000003 00000003", f"{now + 400} 00000003 00000002"]
+    path = tmp_path / "sd.log"
+    path.write_text("\n".join(lines) + "\n")
+    return str(path)
+
+
+def test_steps_decodes_a_step_dir_trace_and_runs_it_through_the_motor(tmp_path):
+    log = _step_dir_log(tmp_path, [80_000] * 5 + [8_000] * 5)     # 1,000 then 10,000 steps/s at 80 MHz
+    code, out, _ = run("trace", "steps", log, "--step-dir", "0,1")
+    assert code == 0 and "10 steps on P0 (step), P1 (dir) (step/dir), net +10 steps" in out
+    assert "motor:" not in out
+    code, out, _ = run("trace", "steps", log, "--step-dir", "0,1", "--pull-in", "2000")
+    assert code == 0 and "motor: 10 steps asked for, 5 missed" in out
+
+
+def test_steps_plots_the_motion(tmp_path):
+    import pytest
+    pytest.importorskip("matplotlib")
+    log = _step_dir_log(tmp_path, [80_000] * 5)
+    png = tmp_path / "m.png"
+    code, out, _ = run("trace", "steps", log, "--step-dir", "0,1", "--plot", str(png))
+    assert code == 0 and png.read_bytes()[:4] == b"\x89PNG" and "top speed 1000.00 steps/s" in out
+
+
+def test_steps_needs_one_drive_with_the_right_number_of_pins(tmp_path):
+    log = _step_dir_log(tmp_path, [80_000])
+    for argv, message in ((["--pins", "1..4", "--step-dir", "0,1"], "either --pins"), ([], "either --pins"),
+                          (["--step-dir", "0"], "--step-dir needs two pins"),
+                          (["--pins", "1..3"], "a stepper has four coil pins")):
+        code, _, err = run("trace", "steps", log, *argv)
+        assert code == 2 and message in err, argv

@@ -5,7 +5,7 @@ import importlib
 import pytest
 
 MODULES = ["spinemu.pbasic", "spinemu.pbasic.exprs", "spinemu.pbasic.serial",
-           "spinemu.pbasic.stimulus", "spinemu.pbasic.timing",
+           "spinemu.pbasic.timing",
            "spinemu.pbasic.words", "spinemu.pbasic.commands", "spinemu.analysis.stepper"]
 
 

@@ -7,7 +7,6 @@ serial bit time = (baudmode & $1FFF) + 20 us, SHIFTOUT 14 us clock pulses.
 import pytest
 
 from spinemu.pbasic.serial import format_number
-from spinemu.pbasic.stimulus import parse_input_spec
 
 from .conftest import bs2, run
 
@@ -260,10 +259,6 @@ def test_shiftin_samples_the_data_pin():
 
 
 # ------------------------------------------------------------------ inputs
-def test_input_spec_parser():
-    assert parse_input_spec("P3=1; 5=0@0,1@0.5") == {3: 1, 5: [(0.0, 0), (0.5, 1)]}
-
-
 def test_xout_is_reported_as_not_supported():
     from spinemu.diagnostics import SpinError
     with pytest.raises(SpinError, match="'XOUT' is not supported"):

@@ -1,0 +1,4 @@
+CON
+  K = 5
+PUB f
+  return 1

@@ -1,0 +1,14 @@
+PUB main | x
+  if x
+    x := 1
+  else
+    if x
+      if x
+        if x
+          if x
+            if x
+              if x
+                if x
+                  if x
+                    if x
+                      x := 1

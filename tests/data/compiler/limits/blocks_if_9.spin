@@ -1,0 +1,11 @@
+PUB main | x, i
+  if x
+    if x
+      if x
+        if x
+          if x
+            if x
+              if x
+                if x
+                  if x
+                    x := 1

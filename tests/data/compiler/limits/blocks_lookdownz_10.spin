@@ -1,0 +1,2 @@
+PUB main | x
+  x := lookdownz(x: lookdownz(x: lookdownz(x: lookdownz(x: lookdownz(x: lookdownz(x: lookdownz(x: lookdownz(x: lookdownz(x: lookdownz(x: 1))))))))))

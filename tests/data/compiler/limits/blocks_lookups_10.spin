@@ -1,0 +1,2 @@
+PUB main | x
+  x := lookup(x: lookup(x: lookup(x: lookup(x: lookup(x: lookup(x: lookup(x: lookup(x: lookup(x: lookup(x: 1))))))))))

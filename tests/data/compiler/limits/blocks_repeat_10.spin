@@ -1,0 +1,12 @@
+PUB main | x, i
+  repeat
+    repeat
+      repeat
+        repeat
+          repeat
+            repeat
+              repeat
+                repeat
+                  repeat
+                    repeat
+                      x := 1
