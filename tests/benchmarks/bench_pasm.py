@@ -29,7 +29,10 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, ROOT)
+try:                    # an installed spinemu (measure a regular ``pip install .``), else this worktree's
+    import spinemu  # noqa: F401
+except ImportError:
+    sys.path.insert(0, ROOT)
 
 from spinemu.chip import Chip  # noqa: E402
 from spinemu.compiler import compile_file, compile_source  # noqa: E402
@@ -200,13 +203,15 @@ def end_to_end(name: str, path: str, include: list, seconds: float) -> None:
     """``spinemu run PATH --seconds S`` in a new process: start-up, compiling and the run."""
     import resource
     import subprocess
-    env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    import spinemu
+    # the spinemu this script imported (run from its folder: ``python -m`` puts the working folder first)
+    env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(spinemu.__file__)))
     cmd = [sys.executable, "-m", "spinemu", "run", path, "--seconds", str(seconds), "-q", "--no-progress"]
     for folder in include:
         cmd += ["-L", folder]
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
-    subprocess.run(cmd, check=True, env=env)
+    subprocess.run(cmd, check=True, env=env, cwd=os.path.dirname(path))
     wall = time.perf_counter() - t0
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
@@ -229,6 +234,8 @@ def main(argv=None):
     ap.add_argument("--only", choices=["loops", "drivers"], help="run only the small loops or only the drivers")
     a = ap.parse_args(argv)
     fast = not a.no_speedups
+    import spinemu
+    print(f"(spinemu from {os.path.dirname(spinemu.__file__)})")
     if a.only != "drivers":
         measure("CPU-bound PASM loop", compile_source(CPU_LOOP).binary, 40_000_000, a.repeat, fast)
         measure("PASM loop toggling a pin", compile_source(PIN_LOOP).binary, 20_000_000, a.repeat, fast)
@@ -253,7 +260,7 @@ def main(argv=None):
             image = compile_file(path, include_dirs=include).binary
             cycles = int(seconds * 80_000_000)
             result = measure(name, image, cycles, a.repeat, fast)
-            if "serial" in name:
+            if "serial" in name.lower():
                 print(f"  the serial line says {_serial_text(result)!r}")
             if fast:
                 end_to_end(name, path, include, seconds)

@@ -34,6 +34,8 @@ def _speedups_change_nothing(src: str, cycles, inputs=None, compat="spinsim"):
 
 
 # ----------------------------------------------------------------------------- random programs
+# (polling programs 1008 and 1011 run a counter edge while a loop is parked on the pins: the scheduler
+# once spun forever on such an edge between a cog's start and its next shared access)
 @pytest.mark.parametrize("kind, seed", [("polling", s) for s in range(1001, 1013)]
                          + [("loops", s) for s in range(2001, 2005)] + [("random", s) for s in range(3001, 3004)])
 def test_random_programs_run_the_same_with_and_without_the_speedups(kind, seed):
