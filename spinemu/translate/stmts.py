@@ -275,9 +275,9 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
     def lookup_item_cost(self, exprs, down: bool, is_range: bool, each: bool = False) -> tuple:
         """``(cycles of the item, extra cycles when it matches)`` of one lookup/lookdown item.
 
-        ``each`` (items paid one by one at run time): ``(cycles up to its call
-        or register write, or before its register read, cycles from there on,
-        extra when it matches)``.
+        ``each`` (items paid one by one at run time): ``(cycles up to its last
+        call or register write, or before its last register read, cycles from
+        there on, extra when it matches)``.
         """
         T = self.T
         ops = [o for e in exprs for o in self.expr_ops(e)]
@@ -285,9 +285,11 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         table = getattr(T, name)
         if each:
             ops.append(Op(0x10, table[False]))
-            cut = next((k + (o.kind in ("call", "write")) for k, o in enumerate(ops)
-                        if o.kind in ("call", "write", "read", "look")), len(ops))
-            return chain(ops[:cut]), chain(ops[cut:]), table[True] - table[False]
+            # around its last event, as a case value: an item ``f(outa)`` pays its call before the
+            # method runs, though the register read comes first
+            around = _around_event(ops)
+            before, after = around if isinstance(around, tuple) else (ops, [])
+            return chain(before), chain(after), table[True] - table[False]
         found, missed = ceil16(table[True] + 12), ceil16(table[False] + 12)
         return sum(ceil16(o.rest + 12) for o in ops) + missed, found - missed
 
