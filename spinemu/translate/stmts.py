@@ -140,13 +140,11 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         finally:
             mc.code, mc.loops = saved
         out = []
-        for k, sp in enumerate(spans):
+        for sp in spans:
             if sp.pos is None and sp.note == "string":
                 continue                    # the string pool
-            if sp.pos is _ITEMS:            # a lookup item paid at run time; the lookup's own LOOK_DONE stays
-                last = k + 1 == len(spans) or spans[k + 1].pos is not _ITEMS
-                if not (last and sp.data == b"\x0f"):
-                    continue
+            if sp.pos is _ITEMS:            # a lookup item paid at run time
+                continue
             out.append(sp.data)
         return b"".join(out)
 
@@ -874,8 +872,9 @@ class _Compiler(cstmts.MethodCompiler):
 
     The items of the lookups in ``lazy`` (ids of nodes) are compiled with the
     code position ``_ITEMS`` (from the end of the lookup's value up to its
-    LOOK_DONE), so that the translator can leave them out of a statement's
-    price but still lay them out where they are.
+    LOOK_DONE, which stays where the lookup is), so that the translator can
+    leave them out of a statement's price but still lay them out where they
+    are.
     """
 
     lazy = frozenset()
@@ -895,6 +894,11 @@ class _Compiler(cstmts.MethodCompiler):
         self.expr = expr
         try:
             super().x_Lookup(node)
+            # its LOOK_DONE (before the end label) belongs to where the lookup is, not to its items: a
+            # lookup that is another lazy lookup's value keeps it (a match gives it back)
+            done = code.items[-2]
+            if done[1] == b"\x0f":
+                done[2] = pos
         finally:
             if had:
                 self.expr = inner
