@@ -13,4 +13,6 @@ PUB main | a
   dira[2]~~
   r[3] := lookdown(lookup(3: 1, a--, 7, outa): 7, a++, 9)
   dira[3]~~
+  r[4] := lookdownz(a: 1, lookupz(a & 1: a++, ina), 6..9, a--)
+  dira[4]~~
   r[5] := a
