@@ -188,7 +188,8 @@ class Chip(Pins, Listeners, Scheduler):
         self._parked: list = []
         self.debug_info = debug_info
         #: called as f(cog, cycle) right after a cog changes its DIRA/OUTA (before other cogs run);
-        #: f(cog, hub_addr, op, cycle) before a write to a long with a PROGRAM or WATCHPOINT watch bit
+        #: f(cog, hub_addr, size, cycle) before a write of size bytes (a bytecode's or a PASM cog's)
+        #: to a long with a PROGRAM or WATCHPOINT watch bit
         #: (runtime checks, debuggers; the bench's live listeners are pin_listeners, listen.py)
         self.pin_hooks: list = []
         self.write_hooks: list = []
@@ -377,15 +378,23 @@ class Chip(Pins, Listeners, Scheduler):
                 return f"{found[0]}:{found[1]}"
         return ""
 
-    def trace_cog(self, cog_id: int, callback: Callable) -> None:
+    def trace_cog(self, cog_id: int, callback: Optional[Callable]) -> None:
         """Report every PASM instruction cog ``cog_id`` executes to ``callback``.
 
         ``callback(step)`` gets a :class:`spinemu.chip.pasm_cog.PasmStep`
         (cycle, cog, address, long, whether it ran, flags after it, the value
         written); ``step.text()`` is one log line.  The traced cog runs an
         instrumented loop; the others are not slowed down.  Call before
-        :meth:`run`.
+        :meth:`run` (or between :meth:`advance` calls: a debugger does);
+        ``callback=None`` ends the tracing.  A callback with a ``before(cog)``
+        method is called before each instruction too
+        (:meth:`~spinemu.chip.pasm_cog.PasmEngine.run_traced`).
         """
+        if callback is None:
+            self._pasm_tracers.pop(cog_id, None)
+            if self.pasm is not None:
+                self.pasm.tracers.pop(cog_id, None)
+            return
         self._pasm_tracers[cog_id] = callback
         if self.pasm is not None:
             self.pasm.tracers[cog_id] = callback

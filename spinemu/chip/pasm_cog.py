@@ -42,7 +42,8 @@ cog's read goes first when its id is lower (as spinsim steps its cogs).
 
 **Hot paths:** :meth:`PasmEngine.run` (one dict lookup of the instruction
 long, one call, no flag checks) and the generated handlers (:mod:`.pasm_ops`).
-:meth:`PasmEngine.run_traced` is its instrumented twin (``--trace-cog``).
+:meth:`PasmEngine.run_traced` is its instrumented twin (``--trace-cog``, the
+debugger: one instruction at a time, with the same results).
 """
 from __future__ import annotations
 
@@ -241,9 +242,21 @@ class PasmEngine:
         c.key = key
 
     def run_traced(self, c, until: int) -> None:
-        """:meth:`run` one instruction at a time, reporting each to the cog's tracer (no running ahead)."""
+        """:meth:`run` one instruction at a time, reporting each to the cog's tracer (no running ahead).
+
+        A tracer with a ``before(cog)`` method (a debugger's) is also called
+        before each instruction it may run; it may raise
+        :class:`~spinemu.chip.control.Halted` to stop the run there, with the
+        cog exactly as before that instruction (it may be called again for
+        the same instruction when its shared access must wait for another cog).
+        The results are those of :meth:`run`: each instruction runs at the
+        same cycle; only the running ahead is given up.
+        """
         report = self.tracers[c.id]
+        before = getattr(report, "before", None)
         while c.state == RUNNING and c.engine is self and c.t < until:
+            if before is not None:
+                before(c)
             R = c.ram
             pc, t = c.pc, c.t
             w = c.ir if c.ir is not None else R[pc]

@@ -27,7 +27,7 @@ import re
 from typing import Callable, NamedTuple, Optional
 
 from .. import pasm as isa
-from .blocks import BUSY
+from .blocks import BUSY, PROGRAM, WATCHPOINT
 
 __all__ = ["ALU", "AluOp", "FAMILIES", "HandlerBuilder", "Handlers", "Yield", "Leave", "Fetched",
            "RAM_SLOTS", "FLAGS", "PAR_REAL", "HUB_PHASE", "COG", "PIN_MODES", "never"]
@@ -227,7 +227,7 @@ class HandlerBuilder:
             "M": M, "SB": 0x80000000, "REV": _rev32, "U": engine.until, "LEAVE": Leave,
             "FETCHED": Fetched, "CH": chip, "WREG": chip.registers.write, "INA": chip.ina,
             "PHS": chip.counters.phs, "PIN_MODES": PIN_MODES, "MEM": chip.mem, "W": chip.mem_words,
-            "L": chip.mem_longs, "WATCH": chip.watch, "BUSY": BUSY, "ENG": engine,
+            "L": chip.mem_longs, "WATCH": chip.watch, "SEEN": BUSY | PROGRAM | WATCHPOINT, "ENG": engine,
         }
 
     # ------------------------------------------------------------------ per long
@@ -422,8 +422,8 @@ class HandlerBuilder:
         body += ["d = R[D]", f"a &= {mask}"]
         body += self._flags(word, "0", "F & 1")             # C cleared, Z kept (as spinsim)
         body += ["if a < 0x8000:",
-                 "    if WATCH[a >> 2] & BUSY:",
-                 "        CH.watch_hit_at(R[515], a, key)",
+                 "    if WATCH[a >> 2] & SEEN:",
+                 f"        CH.pasm_write_hit(R[515], a, {1 << size}, t, key, pc)",
                  f"        {store}",
                  f"        if CH._preempt: CH._end_preemption(); raise LEAVE({nxt})",
                  f"    {store}",

@@ -17,6 +17,7 @@ chosen when one is attached.
 from __future__ import annotations
 
 from .blocks import BUSY, PROGRAM, WATCHPOINT, BlockCompiler
+from .checks import write_size
 from .cog import PARKED, RUNNING, Cog
 from .control import CogStopped, Halted, Preempted, RebootRequested, Reschedule
 from .fastforward import INTERRUPTED, LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
@@ -263,17 +264,33 @@ class Scheduler:
         """``writer``'s bytecode ``op``, started at ``t``, is about to write a watched hub long.
 
         ``write_hooks`` (runtime checks, debugger watchpoints) are told
-        first, as ``f(writer, hub_addr, op, t)``, when the long carries one of
-        their bits.  A parked cog that reads the long is brought up to ``t``
-        (it reads the old value, as it would have), and the writer's run loop
+        first, as ``f(writer, hub_addr, size, t)`` (``size``: the bytes the
+        bytecode writes), when the long carries one of their bits.  A parked
+        cog that reads the long is brought up to ``t`` (it reads the old
+        value, as it would have), and the writer's run loop
         is preempted after this bytecode, so that the scheduler interleaves
         the two cogs again.
         """
         if self.watch[hub_addr >> 2] & _OBSERVED:
+            size = write_size(op)
             for f in self.write_hooks:
-                f(writer, hub_addr, op, t)
+                f(writer, hub_addr, size, t)
         tf = t + 12
         self.watch_hit_at(writer, hub_addr, tf + ((writer.hub_phase - tf) & 15) + self.access_at[op])
+
+    def pasm_write_hit(self, writer: Cog, hub_addr: int, size: int, t: int, key: int, pc: int) -> None:
+        """A PASM cog's WRBYTE/WRWORD/WRLONG (``size`` bytes) at cog address ``pc``, started at ``t``,
+        is about to write a watched hub long at its hub window ``key``: :meth:`watch_hit` for PASM.
+
+        The run loop keeps the cog's address in a local: ``writer.pc`` is set
+        to the writing instruction's for the hooks (the loop sets it again
+        when it ends its slice).
+        """
+        if self.watch[hub_addr >> 2] & _OBSERVED:
+            writer.pc = pc
+            for f in self.write_hooks:
+                f(writer, hub_addr, size, t)
+        self.watch_hit_at(writer, hub_addr, key)
 
     def watch_hit_at(self, writer: Cog, hub_addr: int, key: int) -> None:
         """:meth:`watch_hit` for a write at cycle ``key`` (a PASM cog's hub window)."""
