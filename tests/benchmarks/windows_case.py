@@ -15,7 +15,8 @@ exists exactly as written ("fixed by hand"), by OpenSpin; the report gives how
 many images are byte-identical.  ``--standard`` also gives both compilers the
 Propeller Tool's standard objects (``FullDuplexSerial``, ``TV`` ...), in a
 folder built from the library's copies as ``library_runs.py`` builds it:
-spinemu finds it on ``SPINEMU_PATH``, OpenSpin with ``-L``.  Not part of the test run (it needs OpenSpin
+spinemu finds it on ``SPINEMU_PATH``; OpenSpin gets the ones a project lacks copied
+into its folder (with ``-L`` it would take them before the project's own copies).  Not part of the test run (it needs OpenSpin
 and the library).
 """
 from __future__ import annotations
@@ -79,10 +80,20 @@ def _select(path: str):
     return path, bool(case_mismatches(path)) or uses_other_case(path)
 
 
-def _fixed_copy(folder: str, tmp: str) -> str:
-    """A copy of ``folder`` in which every name used in another case also exists as written."""
+def _fixed_copy(folder: str, tmp: str, std: str = "") -> str:
+    """A copy of ``folder`` in which every name used in another case also exists as written.
+
+    ``std``: a folder of standard objects; each one the project has in no letter case is
+    copied in too (OpenSpin's ``-L`` folders come before the source's own folder, where
+    the Propeller Tool looks in the project first).
+    """
     dst = os.path.join(tmp, "proj")
     shutil.copytree(folder, dst)
+    if std:
+        have = {e.lower() for e in os.listdir(dst)}
+        for name in os.listdir(std):
+            if name.lower() not in have:
+                shutil.copyfile(os.path.join(std, name), os.path.join(dst, name))
     for fname in os.listdir(dst):
         if fname.lower().endswith(".spin"):
             for _kind, name, actual in case_mismatches(os.path.join(dst, fname)):
@@ -94,14 +105,13 @@ def _fixed_copy(folder: str, tmp: str) -> str:
 
 def check(args):
     path, openspin, std = args
-    extra = ["-L", std] if std else []
     from spinemu.compiler import compile_file
     from spinemu.diagnostics import SpinError
     from spinemu.frontend.search import SearchPath
     with tempfile.TemporaryDirectory() as tmp:
-        proj = _fixed_copy(os.path.dirname(path), tmp)
+        proj = _fixed_copy(os.path.dirname(path), tmp, std)
         out = os.path.join(tmp, "ref.binary")
-        r = subprocess.run([openspin, "-q", *extra, "-b", os.path.join(proj, os.path.basename(path)), "-o", out],
+        r = subprocess.run([openspin, "-q", "-b", os.path.join(proj, os.path.basename(path)), "-o", out],
                            capture_output=True, text=True, errors="replace")
         ref = open(out, "rb").read() if r.returncode == 0 and os.path.exists(out) else None
     try:
