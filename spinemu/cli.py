@@ -358,6 +358,8 @@ def cmd_run(args, out: _Out) -> int:
         reason = result.reason
         if session and reason == "deadlock":
             reason += ": the cogs wait on pins nothing will change (input the console does not have)"
+        elif session and reason == "stalled":
+            reason += ": the cogs poll pins and memory nothing will change (input the console does not have)"
         rows = [("ended", reason),
                 ("cogs", f"{started} started, {stopped} stopped"),
                 ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
@@ -398,7 +400,11 @@ def _pasm_rows(result) -> list:
         if kind == "start" and detail.startswith("PASM"):
             rows.append((f"cog {cog_id}", f"{detail} at cycle {cycle:,}"))
     if counts:
-        rows.append(("PASM", ", ".join(f"cog {k}: {n:,} instructions" for k, n in sorted(counts.items()))))
+        text = ", ".join(f"cog {k}: {n:,} instructions" for k, n in sorted(counts.items()))
+        skipped = result.stats.get("pasm_instructions_skipped", 0)
+        if skipped:
+            text += f" ({skipped:,} of them skipped in idle loops)"
+        rows.append(("PASM", text))
     return rows
 
 
@@ -705,7 +711,9 @@ def build_parser() -> argparse.ArgumentParser:
     r = sub.add_parser("run", help="run a .spin, .binary, .eeprom or .bs2 program and record its pins",
                        description="Run a program on the emulated chip and record every pin change.\n"
                                    "Spin sources are compiled first. A run ends when every cog has "
-                                   "stopped or at the limit.",
+                                   "stopped, when nothing can change any more (every cog waits on pins "
+                                   "or polls in a loop nothing will wake: 'deadlock', 'stalled'), or at "
+                                   "the limit (--cycles, --seconds; BASIC Stamp programs: 10 s by default).",
                        formatter_class=argparse.RawDescriptionHelpFormatter)
     r.add_argument("target", metavar="TARGET", help=".spin, .binary, .eeprom or .bs2 file")
     lim = r.add_mutually_exclusive_group()

@@ -160,11 +160,14 @@ def cmd_debug(args, out) -> int:
 
 def _add_debug_parser(sub) -> None:
     cli = _cli()
-    d = sub.add_parser("debug", help="debug a Spin program: breakpoints, stepping, call stacks, variables",
+    d = sub.add_parser("debug",
+                       help="debug a Spin program (and its PASM cogs): breakpoints, stepping, call stacks, variables",
                        description="Run a Spin program under the debugger: step a cog by Spin line or "
-                                   "bytecode; stop on a line, a pin change, a write to a variable or a "
-                                   "condition; see every cog's call stack with parameters, locals and "
-                                   "results, and VAR/DAT by name. Type 'help' at the prompt.")
+                                   "bytecode, a PASM cog by instruction; stop on a line, a DAT label or "
+                                   "a PASM cog address, a pin change, a write to a variable (by Spin or "
+                                   "PASM) or a condition; see every cog's call stack with parameters, "
+                                   "locals and results, a PASM cog's registers by DAT label, and VAR/DAT "
+                                   "by name. Type 'help' at the prompt.")
     d.add_argument("program", metavar="PROG.spin")
     d.add_argument("--commands", metavar="FILE",
                    help="read the commands from FILE (one per line, '#' comments) instead of the terminal")

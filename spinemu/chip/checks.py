@@ -16,7 +16,8 @@ that makes none of these mistakes runs at the same speed with the checks on:
   test gets an ``else``.
 * ``write-into-code``: the longs holding object tables and method code get
   a ``Chip.watch`` bit (:data:`PROGRAM`); a write to a watched long already
-  leaves the fast path (``Chip.watch_hit``), which now also looks at it.
+  leaves the fast path (``Chip.watch_hit``; a PASM cog's hub write,
+  ``Chip.pasm_write_hit``), which now also looks at it.
 * ``uninitialized``: a flow analysis of each method's bytecode (below) finds
   the few reads of a local that some path reaches before any write; only
   those bytecodes, the writes of those locals and the calls are then run
@@ -391,16 +392,18 @@ class RuntimeChecks:
     def write_outside(self, c, addr: int, size: int, t: int) -> None:
         self._warn("write-outside-hub", rw.write_outside_hub(size, addr), c, self._where(c), t)
 
-    def on_watched_write(self, c, addr: int, op: int, t: int) -> None:
-        """A write to a watched long: is it into the program's code?"""
+    def on_watched_write(self, c, addr: int, size: int, t: int) -> None:
+        """A write of ``size`` bytes to a watched long (a bytecode's or a PASM cog's): is it into the program's code?"""
         if not self.chip.watch[addr >> 2] & PROGRAM:
             return
-        size = write_size(op)
         a = addr & ~(size - 1)
         for start, end in self._code_ranges:
             if a < end and a + size > start:
+                where = self._where(c)
+                if c.engine.__class__ is not str and c.ram is not None and c.pc < 496:
+                    where = (c.code_addr + 4 * c.pc) & 0xFFFF      # a PASM cog: its instruction's DAT line
                 self._warn("write-into-code", rw.write_into_code(size, a, self._describe_code(max(a, start))),
-                           c, self._where(c), t)
+                           c, where, t)
                 return
 
     def _describe_code(self, addr: int) -> str:

@@ -193,7 +193,8 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         self._parked: list = []
         self.debug_info = debug_info
         #: called as f(cog, cycle) right after a cog changes its DIRA/OUTA (before other cogs run);
-        #: f(cog, hub_addr, op, cycle) before a write to a long with a PROGRAM or WATCHPOINT watch bit
+        #: f(cog, hub_addr, size, cycle) before a write of size bytes (a bytecode's or a PASM cog's)
+        #: to a long with a PROGRAM or WATCHPOINT watch bit
         #: (runtime checks, debuggers; the bench's live listeners are pin_listeners, listen.py)
         self.pin_hooks: list = []
         self.write_hooks: list = []
@@ -314,7 +315,14 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         if keep != (0, 0):
             self.note_pins(c, t_first)
 
-    def stop_cog(self, c: Cog, t: int, why: str) -> None:
+    def stop_cog(self, c: Cog, t: int, why: str, by: Optional[Cog] = None, seen: Optional[int] = None) -> None:
+        """Stop cog ``c`` at cycle ``t`` (its pins float then).
+
+        ``by`` is the cog whose instruction stops it (default ``c``) and
+        ``seen`` the cycle of that instruction's access (default ``t``): a
+        pin read by another cog at that cycle sees the stop when ``by``'s id
+        is lower, a later one always (as for a pin write, :meth:`note_pins`).
+        """
         if c.state == STOPPED:
             return
         if c.state == PARKED:
@@ -331,6 +339,9 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         self.cog_events.append((t, c.id, "stop", why))
         self._seq += 1
         self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, False))
+        if self._pin_waiters and c.dira:        # the pins it drove float: cogs waiting on them may wake
+            seen = t if seen is None else seen
+            self._wake_pin_waiters(seen + 4, c if by is None else by, seen)
 
     def coginit(self, c: Cog, cog_id: int, code: int, par: int, tf: int) -> int:
         """COGINIT/COGNEW bytecode of Spin cog ``c``: returns the started cog's id, or -1 (as u32)."""
@@ -354,7 +365,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         else:
             target = self.cogs[cog_id]
         if target.state != STOPPED:
-            self.stop_cog(target, done, f"restarted by cog {c.id}")
+            self.stop_cog(target, done, f"restarted by cog {c.id}", by=c, seen=done - 4)
         if self.spinsim:
             # the new cog's first slot is the COGINIT's last cycle, one step later
             # when spinsim has already stepped the target in that cycle (a lower id, or itself)
@@ -389,15 +400,23 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
                 return f"{found[0]}:{found[1]}"
         return ""
 
-    def trace_cog(self, cog_id: int, callback: Callable) -> None:
+    def trace_cog(self, cog_id: int, callback: Optional[Callable]) -> None:
         """Report every PASM instruction cog ``cog_id`` executes to ``callback``.
 
         ``callback(step)`` gets a :class:`spinemu.chip.pasm_cog.PasmStep`
         (cycle, cog, address, long, whether it ran, flags after it, the value
         written); ``step.text()`` is one log line.  The traced cog runs an
         instrumented loop; the others are not slowed down.  Call before
-        :meth:`run`.
+        :meth:`run` (or between :meth:`advance` calls: a debugger does);
+        ``callback=None`` ends the tracing.  A callback with a ``before(cog)``
+        method is called before each instruction too
+        (:meth:`~spinemu.chip.pasm_cog.PasmEngine.run_traced`).
         """
+        if callback is None:
+            self._pasm_tracers.pop(cog_id, None)
+            if self.pasm is not None:
+                self.pasm.tracers.pop(cog_id, None)
+            return
         self._pasm_tracers[cog_id] = callback
         if self.pasm is not None:
             self.pasm.tracers[cog_id] = callback
@@ -409,7 +428,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
             self.stop_cog(c, t, "COGSTOP of itself" if c.pc != 0xFFFC else "returned from its top method")
             raise CogStopped(rest)
         if target.state != STOPPED:
-            self.stop_cog(target, t, f"stopped by cog {c.id}")
+            self.stop_cog(target, t, f"stopped by cog {c.id}", by=c)
             raise Reschedule(rest)
         return rest
 
@@ -519,6 +538,8 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
                  "wall_seconds": wall, "simulated_seconds": end / self.clock_hz if self.clock_hz else 0.0}
         stats["realtime_factor"] = stats["simulated_seconds"] / wall if wall > 0 else 0.0
         stats.update(self._ff_stats())
+        if self.pasm is not None:
+            stats.update(self.pasm.stats())
         stats["pll"] = [p._asdict() for p in self.counters.pll_outputs(end)]
         return RunResult(trace, bytes(self.mem[:HUB_SIZE]), end, reason, list(self.cog_events),
                          warnings, stats,

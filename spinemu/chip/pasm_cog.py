@@ -42,20 +42,24 @@ cog's read goes first when its id is lower (as spinsim steps its cogs).
 
 **Hot paths:** :meth:`PasmEngine.run` (one dict lookup of the instruction
 long, one call, no flag checks) and the generated handlers (:mod:`.pasm_ops`).
-:meth:`PasmEngine.run_traced` is its instrumented twin (``--trace-cog``).
+:meth:`PasmEngine.run_traced` is its instrumented twin (``--trace-cog``, the
+debugger: one instruction at a time, with the same results).
 """
 from __future__ import annotations
 
 from typing import Callable, NamedTuple, Optional
 
 from .. import pasm as isa
-from .cog import PIN_WAIT, RUNNING, STOPPED
+from .cog import PARKED, PIN_WAIT, RUNNING, STOPPED
 from .control import RebootRequested
-from .pasm_ops import COG, FLAGS, HUB_PHASE, PAR_REAL, RAM_SLOTS, Fetched, HandlerBuilder, Handlers, Leave, Yield
+from .pasm_blocks import HOT, RECOMPILE_LIMIT, PasmBlockCompiler
+from .pasm_idle import IdleSkipper
+from .pasm_ops import AUX, COG, FLAGS, HUB_PHASE, PAR_REAL, RAM_SLOTS, Fetched, HandlerBuilder, Handlers, Leave, Yield
 
 __all__ = ["PasmEngine", "PasmStep", "LOAD_LONGS", "RUN_AHEAD"]
 
 M = 0xFFFFFFFF
+NEVER = 1 << 62
 #: longs a started cog loads from hub RAM ($000-$1EF)
 LOAD_LONGS = 496
 #: cycles a PASM cog may run past the scheduler's ``until`` through instructions only it sees
@@ -101,6 +105,28 @@ class PasmStep(NamedTuple):
 
 _NEXT = [(k + 1) & 511 for k in range(512)]
 _LEFT = "left"
+_COLD = 1 << 30                 # heat of an address that is not compiled again (soon)
+_NO_HEAT = [_COLD] * 512        # the heat counted while a slice ends inside a block (it is thrown away)
+
+
+class CogAux:
+    """A PASM cog's engine state besides its RAM (``R[AUX]``): blocks, heat, idle-loop checks.
+
+    ``blocks[pc]`` is the compiled block starting at ``pc`` or ``None``;
+    ``heat[pc]`` counts down the interpreted visits of ``pc`` until a block
+    is compiled there; ``compiles[pc]`` how often one was; ``idle_at`` the
+    cycle of the next offer of the cog's loop to the idle-loop skipper,
+    ``idle_every`` the interval after a refusal.
+    """
+
+    __slots__ = ("blocks", "heat", "compiles", "idle_at", "idle_every")
+
+    def __init__(self, idle_at: int):
+        self.blocks: list = [None] * 512
+        self.heat = [HOT] * 512
+        self.compiles = bytearray(512)
+        self.idle_at = idle_at
+        self.idle_every = 0
 
 
 class PasmEngine:
@@ -124,9 +150,20 @@ class PasmEngine:
         self.instructions = 0
         #: cog id -> register a waiting WAITPEQ/WAITPNE with ``wr`` writes when it ends
         self.wait_results: dict = {}
+        #: hot blocks of cog RAM compiled to Python (None: every instruction through its handler)
+        self.compiler = PasmBlockCompiler(self.builder) if chip.compile_blocks else None
+        #: the idle-loop skipper (parks cogs in loops that wait for a change)
+        self.idle = IdleSkipper(self, enabled=chip.fast_forward)
 
     def __repr__(self) -> str:  # the scheduler's engine name in debugging output
         return "<PasmEngine>"
+
+    def stats(self) -> dict:
+        """The run's PASM speed-up statistics (merged into ``RunResult.stats``)."""
+        idle = self.idle
+        return {"pasm_blocks_compiled": self.compiler.count if self.compiler is not None else 0,
+                "pasm_loops_parked": idle.parked, "pasm_passes_skipped": idle.passes_skipped,
+                "pasm_instructions_skipped": idle.instructions_skipped}
 
     # ------------------------------------------------------------------ starting
     def start(self, c, code: int, par: int, t_first: int, by) -> None:
@@ -151,6 +188,9 @@ class PasmEngine:
         if chip.spinsim:
             R[_PAR] = par
         R[PAR_REAL], R[HUB_PHASE], R[COG], R[FLAGS] = par, c.hub_phase, c, 0
+        R[AUX] = CogAux(t_first + 4 + self.idle.first_offer)
+        if c.busy is not None:                  # parked before its restart
+            self.idle.forget(c)
         c.ram = R
         c.par = par
         c.pc = 0
@@ -177,13 +217,20 @@ class PasmEngine:
         """Run cog ``c`` until its next shared access at or past ``until``. (Hot loop.)
 
         Instructions that only touch the cog's own RAM run on past ``until``
-        (up to :data:`RUN_AHEAD` cycles and never past the run's limit).
+        (up to :data:`RUN_AHEAD` cycles and never past the run's limit), a
+        compiled block (:mod:`.pasm_blocks`) at a time where there is one.
+        Every :attr:`CogAux.idle_at` cycles the cog's loop is offered to the
+        idle-loop skipper (:mod:`.pasm_idle`), which may park the cog.
         """
         if c.id in self.tracers:
             return self.run_traced(c, until)
+        if c.state == PARKED:                   # its horizon came first: the loop ends here
+            self.idle.resume(c, until)
         chip = self.chip
         self.until[0] = until
         R = c.ram
+        A = R[AUX]
+        B = A.blocks
         H = self.handlers
         NEXT = _NEXT
         pc = c.pc
@@ -197,8 +244,28 @@ class PasmEngine:
         n = 0
         key = None
         while key is None:
+            lim = A.idle_at
+            if lim > bound:
+                lim = bound
+            HEAT = A.heat
             try:
-                while t < bound:
+                while t < lim:
+                    b = B[pc]
+                    if b is not None:
+                        x = b(R, t, w, lim)
+                        if x >= 0:
+                            t = x >> 17
+                            n += (x >> 9) & 255
+                            pc = x & 511
+                            w = R[pc]
+                            continue
+                        if x == -2:         # the rest of the slice, instruction by instruction: not hot
+                            HEAT = _NO_HEAT
+                    h = HEAT[pc]
+                    if h:
+                        HEAT[pc] = h - 1
+                    elif self._hot(A, R, pc):
+                        continue            # a block starts here now: run it
                     pc1 = NEXT[pc]
                     w1 = R[pc1]
                     x = H[w](R, pc, t)
@@ -215,7 +282,14 @@ class PasmEngine:
                         break
                     n += 1
                 else:
-                    key = t
+                    if t >= bound:
+                        key = t
+                    else:                   # time to offer the loop to the idle skipper
+                        c.instructions += n
+                        self.instructions += n
+                        n = 0
+                        if self.idle.offer(c, R, pc, t, w):
+                            return          # parked: the skipper set the cog's state
             except Yield as e:
                 key = e.key
             except Fetched as e:
@@ -240,10 +314,50 @@ class PasmEngine:
         c.ir = w
         c.key = key
 
+    def _hot(self, A: "CogAux", R: list, pc: int) -> bool:
+        """Address ``pc`` was interpreted :data:`~.pasm_blocks.HOT` times: compile a block there.
+
+        Returns whether a new block starts there.  A block that exists (it
+        declined a run) is kept while its code is unchanged; an address
+        recompiled :data:`~.pasm_blocks.RECOMPILE_LIMIT` times stays
+        interpreted.
+        """
+        A.heat[pc] = _COLD
+        if self.compiler is None:
+            return False
+        old = A.blocks[pc]
+        if old is not None and old.matches(R):
+            A.heat[pc] = HOT
+            return False
+        if A.compiles[pc] >= RECOMPILE_LIMIT:
+            A.blocks[pc] = None
+            return False
+        A.compiles[pc] += 1
+        fn = A.blocks[pc] = self.compiler.compile(R, pc)
+        if fn is None:
+            return False
+        heat = A.heat
+        for a in range(pc, fn.span[1]):         # inside the block: cold again (entered by jumps only)
+            if heat[a] < HOT:
+                heat[a] = HOT
+        return True
+
     def run_traced(self, c, until: int) -> None:
-        """:meth:`run` one instruction at a time, reporting each to the cog's tracer (no running ahead)."""
+        """:meth:`run` one instruction at a time, reporting each to the cog's tracer (no running ahead).
+
+        A tracer with a ``before(cog)`` method (a debugger's) is also called
+        before each instruction it may run; it may raise
+        :class:`~spinemu.chip.control.Halted` to stop the run there, with the
+        cog exactly as before that instruction (it may be called again for
+        the same instruction when its shared access must wait for another cog).
+        The results are those of :meth:`run`: each instruction runs at the
+        same cycle; only the running ahead is given up.
+        """
         report = self.tracers[c.id]
+        before = getattr(report, "before", None)
         while c.state == RUNNING and c.engine is self and c.t < until:
+            if before is not None:
+                before(c)
             R = c.ram
             pc, t = c.pc, c.t
             w = c.ir if c.ir is not None else R[pc]
@@ -323,7 +437,7 @@ class PasmEngine:
         c.key = 0
         raise Leave(None)
 
-    def wake_time(self, c, t: int, writer) -> int:
+    def wake_time(self, c, t: int, writer, seen=None) -> int:
         """The first cycle of the instruction after a WAITPEQ/WAITPNE that the pins at ``t`` satisfy.
 
         ``t`` is when the pins changed: a cog's write (``writer``) shows at its
@@ -332,6 +446,8 @@ class PasmEngine:
         seen by the first poll at or after it.  Polls fall on the waiting
         cog's 4-cycle grid.
         """
+        if c.state == PARKED:                   # an idle loop that reads the pins
+            return self.idle.wake_time(c, t, writer, seen)
         grid = c.t & 3
         base = t - 4 if writer is not None else t
         poll = base + ((grid - base) & 3)
@@ -412,10 +528,10 @@ class PasmEngine:
             target = chip.cogs[result]
             if target is c:
                 self._flags(R, wz, wc, carry, zero)
-                chip.stop_cog(c, key, "COGSTOP of itself")
+                chip.stop_cog(c, key, "COGSTOP of itself", seen=key - 4)
                 raise Leave(None)
             if target.state != STOPPED:
-                chip.stop_cog(target, key, f"stopped by cog {c.id}")
+                chip.stop_cog(target, key, f"stopped by cog {c.id}", by=c, seen=key - 4)
                 leave = True
         elif op == 4:                                   # LOCKNEW
             got = chip.locknew()

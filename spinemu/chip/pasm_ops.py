@@ -27,15 +27,15 @@ import re
 from typing import Callable, NamedTuple, Optional
 
 from .. import pasm as isa
-from .blocks import BUSY
+from .blocks import BUSY, PROGRAM, WATCHPOINT
 
-__all__ = ["ALU", "AluOp", "FAMILIES", "HandlerBuilder", "Handlers", "Yield", "Leave", "Fetched",
-           "RAM_SLOTS", "FLAGS", "PAR_REAL", "HUB_PHASE", "COG", "PIN_MODES", "never"]
+__all__ = ["ALU", "AluOp", "JUMPS", "JumpOp", "CONDITION_EXPRS", "FAMILIES", "HandlerBuilder", "Handlers", "Yield", "Leave", "Fetched",
+           "RAM_SLOTS", "FLAGS", "PAR_REAL", "HUB_PHASE", "COG", "AUX", "PIN_MODES", "never"]
 
 M = 0xFFFFFFFF
 #: cog RAM slots after the 512 longs (see the module docstring)
-FLAGS, PAR_REAL, HUB_PHASE, COG = 512, 513, 514, 515
-RAM_SLOTS = 516
+FLAGS, PAR_REAL, HUB_PHASE, COG, AUX = 512, 513, 514, 515, 516
+RAM_SLOTS = 517
 #: distinct instruction longs kept compiled before the cache starts over (code that runs data)
 MAX_HANDLERS = 1 << 16
 #: counter modes whose PHS depends on the pins (POS/NEG detectors, edge counters, logic modes)
@@ -120,6 +120,51 @@ ALU: dict[str, AluOp] = {
     "subsx": AluOp("", "(d - s - c) & M", _SUB_V, _CHAIN_Z),
     "cmpsub": AluOp("ok = d >= s", "d - s if ok else d", "ok", "d == s"),
 }
+
+
+class JumpOp(NamedTuple):
+    """One jump instruction as Python text over ``d``, ``s``, ``pc`` (the jump's own address).
+
+    ``result`` is the long written to D (with ``wr``), ``carry`` and ``zero``
+    the new C and Z (``r`` is the result), ``taken`` whether it jumps to
+    ``S[8..0]``: 4 cycles when it does, 8 when not (``jmpret`` always jumps).
+    """
+
+    result: str
+    carry: str
+    zero: str
+    taken: str
+
+
+#: the jump families: ``jmpret`` (``jmp``, ``call``, ``ret``), ``djnz``, ``tjnz``, ``tjz``
+JUMPS: dict[str, JumpOp] = {
+    "jmpret": JumpOp("(d & 0xFFFFFE00) | ((pc + 1) & 511)", "d < s", "r == 0", "True"),
+    "djnz": JumpOp("(d - 1) & M", "d == 0", "r == 0", "r"),
+    "tjnz": JumpOp("d", "0", "d == 0", "d"),
+    "tjz": JumpOp("d", "0", "d == 0", "not d"),
+}
+
+
+def _condition_exprs() -> list:
+    """Per 4-bit condition field, a Python expression over flags ``c`` and ``z`` (0/1 or bools).
+
+    The field is a truth table: bit ``(C << 1) | Z`` says whether the instruction runs.
+    """
+    shapes = ["False", "not c and not z", "not c and z", "not c", "c and not z", "not z", "c != z",
+              "not c or not z", "c and z", "c == z", "z", "not c or z", "c", "c or not z", "c or z", "True"]
+    out = []
+    for cond in range(16):
+        for e in shapes:
+            if all(bool(eval(e, {}, {"c": cc, "z": zz})) == bool((cond >> ((cc << 1) | zz)) & 1)
+                   for cc in (0, 1) for zz in (0, 1)):
+                out.append(e)
+                break
+    return out
+
+
+#: condition field -> Python expression over ``c`` and ``z`` (``"True"``: always, ``"False"``: never)
+CONDITION_EXPRS = _condition_exprs()
+assert len(CONDITION_EXPRS) == 16
 
 
 def _rev32(x: int) -> int:
@@ -227,7 +272,7 @@ class HandlerBuilder:
             "M": M, "SB": 0x80000000, "REV": _rev32, "U": engine.until, "LEAVE": Leave,
             "FETCHED": Fetched, "CH": chip, "WREG": chip.registers.write, "INA": chip.ina,
             "PHS": chip.counters.phs, "PIN_MODES": PIN_MODES, "MEM": chip.mem, "W": chip.mem_words,
-            "L": chip.mem_longs, "WATCH": chip.watch, "BUSY": BUSY, "ENG": engine,
+            "L": chip.mem_longs, "WATCH": chip.watch, "SEEN": BUSY | PROGRAM | WATCHPOINT, "ENG": engine,
         }
 
     # ------------------------------------------------------------------ per long
@@ -371,26 +416,21 @@ class HandlerBuilder:
         wr = bool(word & isa.R_BIT)
         imm = bool(word & isa.I_BIT)
         dest, src = (word >> 9) & 0x1FF, word & 0x1FF
+        op = JUMPS[kind]
         checks: list = []
         s_expr = self._source(word, checks)
         body = checks + ["d = R[D]"]
         nxt = "((t + 8) << 9) | ((pc + 1) & 511)"       # not taken: 8 cycles
-        if kind == "jmpret":
-            body += [f"s = {s_expr}", "r = (d & 0xFFFFFE00) | ((pc + 1) & 511)"]
-            carry, zero, taken = "d < s", "r == 0", "True"
-        elif kind == "djnz":
-            body += ["r = (d - 1) & M"]
-            carry, zero, taken = "d == 0", "r == 0", "r"
+        if kind == "jmpret":                            # C compares with S: read it first
+            body += [f"s = {s_expr}", f"r = {op.result}"]
         else:
-            body += ["r = d"]
-            carry, zero, taken = "0", "d == 0", "d" if kind == "tjnz" else "not d"
-        if kind != "jmpret":
-            body.append("s = S" if imm else f"s = {s_expr}")
+            body += [f"r = {op.result}", "s = S" if imm else f"s = {s_expr}"]
+        carry, zero, taken = op.carry, op.zero, op.taken
         go = "((t + 4) << 9) | (s & 511)"
         checks2: list = []
         commit: list = []
         if wr:
-            after = go if kind == "jmpret" else f"({go}) if {taken} else {nxt}"
+            after = go if taken == "True" else f"({go}) if {taken} else {nxt}"
             self._dest_write(word, "r", "t + 4", after, checks2, commit)
         body += checks2 + self._flags(word, carry, zero) + commit
         # the pipeline fetched the target before this instruction wrote it: the old long runs
@@ -422,8 +462,8 @@ class HandlerBuilder:
         body += ["d = R[D]", f"a &= {mask}"]
         body += self._flags(word, "0", "F & 1")             # C cleared, Z kept (as spinsim)
         body += ["if a < 0x8000:",
-                 "    if WATCH[a >> 2] & BUSY:",
-                 "        CH.watch_hit_at(R[515], a, key)",
+                 "    if WATCH[a >> 2] & SEEN:",
+                 f"        CH.pasm_write_hit(R[515], a, {1 << size}, t, key, pc)",
                  f"        {store}",
                  f"        if CH._preempt: CH._end_preemption(); raise LEAVE({nxt})",
                  f"    {store}",

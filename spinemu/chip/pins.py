@@ -52,12 +52,13 @@ class Pins:
         self._seq += 1
         self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, c.state != STOPPED))
 
-    def note_pins(self, c: Cog, t: int) -> None:
-        """Cog ``c`` changed DIRA or OUTA at cycle ``t`` (the pins change then)."""
+    def note_pins(self, c: Cog, t: int, seen=None) -> None:
+        """Cog ``c`` changed DIRA or OUTA at cycle ``t`` (the pins change then; ``seen``: see
+        :meth:`~spinemu.chip.registers.Registers.write`)."""
         self._seq += 1
         self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, c.state != STOPPED))
         if self._pin_waiters:
-            self._wake_pin_waiters(t, c)
+            self._wake_pin_waiters(t, c, seen)
             if self.counters.feedback_on:       # a feedback output follows its input one clock later
                 self._wake_pin_waiters(t + 1, c)
             if self._reactive_inputs:           # a bench part may answer later: the scheduler asks it again
@@ -78,20 +79,22 @@ class Pins:
         self._ext_seen = max(self._ext_seen, t)
         raise Reschedule(_NEVER - tf)
 
-    def _wake_pin_waiters(self, t: int, writer=None) -> None:
+    def _wake_pin_waiters(self, t: int, writer=None, seen=None) -> None:
         """Resume the cogs whose WAITPEQ/WAITPNE condition holds at cycle ``t``.
 
         Called from inside another cog's instruction (``writer``'s pin write),
         it also preempts that cog's run loop, so the scheduler sees the woken
         cog.  A Spin waiter resumes a fixed time after ``t``; a PASM waiter
-        (``after`` None) at its next poll (:meth:`PasmEngine.wake_time`).
+        (``after`` None) at its next poll, a parked PASM loop at the first
+        pass that sees the change (``seen``: the writer's access, default
+        ``t - 4``; :meth:`PasmEngine.wake_time`).
         """
         woke = False
         for c in list(self._pin_waiters):
             mask, state, equal, after = c.pin_wait
             if ((self.ina(t) & mask) == state) == equal:
                 self._pin_waiters.remove(c)
-                c.t = t + after if after is not None else c.engine.wake_time(c, t, writer)
+                c.t = t + after if after is not None else c.engine.wake_time(c, t, writer, seen)
                 c.pin_wait = None
                 c.state = RUNNING
                 self._cogs_changed = True

@@ -52,19 +52,24 @@ class Registers:
             return (c.dcall, c.pbase | (c.pbase_hi << 16), c.vbase, c.dbase, 0, c.sp)[k - 0xA] & _M
         return c.scratch[k]
 
-    def write(self, c, r: int, v: int, t: int) -> None:
-        """Cog ``c`` writes ``v`` to register ``r`` with an instruction at cycle ``t`` (pins change at ``t``)."""
+    def write(self, c, r: int, v: int, t: int, seen=None) -> None:
+        """Cog ``c`` writes ``v`` to register ``r`` with an instruction at cycle ``t`` (pins change at ``t``).
+
+        ``seen``: the cycle from which other cogs' reads of the pins see the
+        change (the writing bytecode's access, which the scheduler orders
+        the cogs by); default ``t - 4`` (a PASM instruction's).
+        """
         v &= _M
         if r >= 0x1F0:
             k = r - 0x1F0
             if k == 4:
                 if v != c.outa:
                     c.outa = v
-                    self.chip.note_pins(c, t)
+                    self.chip.note_pins(c, t, seen)
             elif k == 6:
                 if v != c.dira:
                     c.dira = v
-                    self.chip.note_pins(c, t)
+                    self.chip.note_pins(c, t, seen)
             elif k == 5:
                 c.outb = v
             elif k == 7:

@@ -17,6 +17,7 @@ chosen when one is attached.
 from __future__ import annotations
 
 from .blocks import BUSY, CODE, PROGRAM, WATCHPOINT, BlockCompiler
+from .checks import write_size
 from .cog import PARKED, RUNNING, Cog
 from .control import CogStopped, Halted, Preempted, RebootRequested, Reschedule
 from .ahead import AHEAD, CLAIM, NOPRIV, RO, SHARED, _interpreted
@@ -81,7 +82,9 @@ class Scheduler:
         while True:
             if self._cogs_changed:
                 self._cogs_changed = False
-                running = [k for k in cogs if k.state == RUNNING]
+                # a parked PASM cog (pasm_idle.py) stays listed: its key is the end of its loop's horizon
+                running = [k for k in cogs if k.state == RUNNING
+                           or (k.state == PARKED and k.engine.__class__ is not str)]
                 generic = any(k.engine.__class__ is not str for k in running)
                 # a cog may run ahead (ahead.py) unless a cog whose hub accesses are not checked runs
                 self._private_ok = (self._pblocks is not None and not traced and not probed and not self._handlers_wrapped
@@ -105,6 +108,8 @@ class Scheduler:
                     c, ck = k, key
                 elif c2 is None or key < ck2:
                     c2, ck2 = k, key
+            if ck >= _NEVER:
+                c = None                        # only parked loops with no end of their own
             ext = self._next_external(limit) if self._pin_waiters else None
             if listening:
                 now = ck if c is not None else ext
@@ -113,8 +118,10 @@ class Scheduler:
                                  ck + 1 if c is not None else max(self.now, self._ext_seen) + 1)
                     if self._pin_waiters:       # a listener may have added input changes
                         ext = self._next_external(limit)
-            if ext is not None and (c is None or ext <= c.t):
-                self.now = self._ext_seen = ext         # an input edge or a counter edge
+            # an input edge or a counter edge first when it comes before the next cog's access
+            # (a cog runs nothing with ``until`` at or before its key: the edge must go first)
+            if ext is not None and (c is None or ext <= ck):
+                self.now = self._ext_seen = ext
                 self._wake_pin_waiters(ext)
                 continue
             if c is None:
@@ -131,8 +138,11 @@ class Scheduler:
                         continue                # ... unless a pin listener sends something
                     if limit < _NEVER:
                         self.now = limit
+                        for p in list(self._parked):
+                            self._unpark(p, limit)
                         return "cycle limit"
-                    return "deadlock"
+                    # some cog spins in a parked loop (a PASM loop polling the pins too): stalled
+                    return "stalled" if self._parked else "deadlock"
                 return "all cogs stopped"
             t = c.t
             if ck >= limit:
@@ -247,6 +257,9 @@ class Scheduler:
 
     def _unpark(self, c: Cog, t_limit: int) -> None:
         """Bring parked cog ``c`` to where it would be, running its loop, when bytecodes starting before ``t_limit`` are done."""
+        if c.engine.__class__ is not str:       # a parked PASM cog: its engine knows its loop
+            c.engine.idle.unpark(c, t_limit)
+            return
         busy = c.busy
         k = max(0, (t_limit - 1 - c.park_t0) // busy.period)
         c.t = c.park_t0 + k * busy.period
@@ -274,17 +287,33 @@ class Scheduler:
         """``writer``'s bytecode ``op``, started at ``t``, is about to write a watched hub long.
 
         ``write_hooks`` (runtime checks, debugger watchpoints) are told
-        first, as ``f(writer, hub_addr, op, t)``, when the long carries one of
-        their bits.  A parked cog that reads the long is brought up to ``t``
-        (it reads the old value, as it would have), and the writer's run loop
+        first, as ``f(writer, hub_addr, size, t)`` (``size``: the bytes the
+        bytecode writes), when the long carries one of their bits.  A parked
+        cog that reads the long is brought up to ``t`` (it reads the old
+        value, as it would have), and the writer's run loop
         is preempted after this bytecode, so that the scheduler interleaves
         the two cogs again.
         """
         if self.watch[hub_addr >> 2] & _OBSERVED:
+            size = write_size(op)
             for f in self.write_hooks:
-                f(writer, hub_addr, op, t)
+                f(writer, hub_addr, size, t)
         tf = t + 12
         self.watch_hit_at(writer, hub_addr, tf + ((writer.hub_phase - tf) & 15) + self.access_at[op])
+
+    def pasm_write_hit(self, writer: Cog, hub_addr: int, size: int, t: int, key: int, pc: int) -> None:
+        """A PASM cog's WRBYTE/WRWORD/WRLONG (``size`` bytes) at cog address ``pc``, started at ``t``,
+        is about to write a watched hub long at its hub window ``key``: :meth:`watch_hit` for PASM.
+
+        The run loop keeps the cog's address in a local: ``writer.pc`` is set
+        to the writing instruction's for the hooks (the loop sets it again
+        when it ends its slice).
+        """
+        if self.watch[hub_addr >> 2] & _OBSERVED:
+            writer.pc = pc
+            for f in self.write_hooks:
+                f(writer, hub_addr, size, t)
+        self.watch_hit_at(writer, hub_addr, key)
 
     def watch_hit_at(self, writer: Cog, hub_addr: int, key: int) -> None:
         """:meth:`watch_hit` for a write at cycle ``key`` (a PASM cog's hub window)."""

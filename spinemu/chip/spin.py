@@ -26,7 +26,7 @@ from __future__ import annotations
 from ..bytecode import TABLE
 from .control import RebootRequested, Reschedule
 from .mathops import BINARY, MASK32, UNARY
-from .timing import Timing, math_param
+from .timing import Timing, access_offsets, math_param
 
 __all__ = ["build_handlers", "random_forward", "random_reverse"]
 
@@ -128,8 +128,9 @@ def build_handlers(chip, timing: Timing):
         return (b - 0x80 if b & 0x40 else b), False
 
     # ------------------------------------------------------------------ registers
-    regs = chip.registers   # register access: read(c, r, t), write(c, r, v, t)
+    regs = chip.registers   # register access: read(c, r, t), write(c, r, v, t, seen)
     reg_read, reg_write = regs.read, regs.write
+    ACC = access_offsets()  # a pin write is seen by other cogs from the bytecode's access on
 
     # ------------------------------------------------------------------ assignment operators
     def _assign(c, a, v, inc_mask, reg):
@@ -516,7 +517,7 @@ def build_handlers(chip, timing: Timing):
     def op_pop_spr(c, op, t):
         tf = fetched(c, t)
         r = 0x1F0 + (pop(c) & 0xF)
-        reg_write(c, r, pop(c), tf + T.spr_pop - 4)     # registers change in the last instruction
+        reg_write(c, r, pop(c), tf + T.spr_pop - 4, tf + ACC[op])     # registers change in the last instruction
         return T.spr_pop
 
     def op_using_spr(c, op, t):
@@ -526,7 +527,7 @@ def build_handlers(chip, timing: Timing):
         c.pc += 1
         v = reg_read(c, r, tf + T.spr_read_at)
         new, rest = _assign(c, a, v, MASK32, True)
-        reg_write(c, r, new, tf + T.spr_using + rest - 4)
+        reg_write(c, r, new, tf + T.spr_using + rest - 4, tf + ACC[op])
         return T.spr_using + rest
 
     def op_waitvid(c, op, t):
@@ -645,7 +646,7 @@ def build_handlers(chip, timing: Timing):
             if width < 32:
                 old = reg_read(c, r, tf + T.reg_read_at[key])
                 v = (old & ~(field << lo)) | (v << lo)
-            reg_write(c, r, v, tf + T.reg[key] - 4)
+            reg_write(c, r, v, tf + T.reg[key] - 4, tf + ACC[op])
             return T.reg[key]
         if access == 2:
             a = mem[c.pc]
@@ -658,7 +659,7 @@ def build_handlers(chip, timing: Timing):
             new &= field
             if rev:
                 new = _reverse_bits(new, width)
-            reg_write(c, r, (old & ~(field << lo)) | (new << lo), tf + T.reg[key] + rest - 4)
+            reg_write(c, r, (old & ~(field << lo)) | (new << lo), tf + T.reg[key] + rest - 4, tf + ACC[op])
             return T.reg[key] + rest
         raise chip.fault(c, c.pc - 2, f"register access ${b:02X} is not a Spin operation")
 

@@ -188,6 +188,22 @@ class CodeBuffer:
             prev = here
         return self._spans(start, here, addr)
 
+    def label_offsets(self, start: int) -> dict:
+        """``{label: object offset}`` of every marked label, for code laid out at ``start``."""
+        self.layout(start)
+        at, addr = {}, start
+        for item in self.items:
+            kind = item[0]
+            if kind == _MARK:
+                at[item[4]] = addr
+            elif kind == _BYTES:
+                addr += len(item[1])
+            elif kind == _STR:
+                addr += 3
+            else:                           # a jump or an address push, as layout sized it
+                addr += len(item[1]) + item[5] if kind == _JUMP else 1 + item[5]
+        return at
+
     def _pool(self, order: list, at: int) -> tuple[dict, list]:
         """Each string's address, and the strings that stay in the pool (in order), for a pool at ``at``."""
         offsets: dict = {}

@@ -19,24 +19,29 @@ __all__ = ["CommandLoop", "HELP", "parse_duration"]
 PROMPT = "(spin) "
 
 HELP = """\
-break LOCATION [if COND]   stop before a line runs: LINE, FILE:LINE, METHOD or OBJECT.METHOD
-break pin N                stop after a bytecode changes pin N
+break LOCATION [if COND]   stop before a line runs: LINE, FILE:LINE, METHOD or OBJECT.METHOD;
+                           a DAT label or DAT line: before a PASM cog runs that instruction
+break cog N @ADDR [if C]   stop PASM cog N before it runs cog address ADDR ($01A or a DAT label)
+break pin N                stop after a bytecode or PASM instruction changes pin N
 break if COND              stop at the first Spin line (any cog) where COND holds
-watch NAME                 stop after a bytecode writes VAR/DAT variable NAME (OBJECT.NAME)
+watch NAME                 stop after a bytecode or PASM WRxxxx writes VAR/DAT variable NAME
 delete [N]                 delete breakpoint N (all without N)
 info breakpoints           list the breakpoints
 continue [TIME]            run until a breakpoint, the end, or TIME more (10ms, 2s, 5000 cycles)
 step [N] / next [N]        the selected cog's next Spin line, into / over calls
+                           (a PASM cog: N instructions / over a call)
 finish                     run until the selected cog's method returns
-stepi [N]                  N bytecodes of the selected cog
+stepi [N]                  N bytecodes (a PASM cog: instructions) of the selected cog
 until LOCATION             run to a location
 run TIME                   let TIME pass (breakpoints still stop it)
 cog N                      select cog N (step, next, print and bt follow it)
 cogs                       where every cog is
+regs                       the selected PASM cog's registers by DAT label, its flags and PC
 bt [all]                   the call stack of the selected cog (all: of every cog), with values
 frame N / up / down        select a frame of the selected cog's stack
 print EXPR                 a local, parameter, result, VAR/DAT variable, register or expression
-set NAME = VALUE           write a local or a VAR/DAT variable
+                           (a PASM cog: its registers by DAT label, cnt, ina, outa, dira, par)
+set NAME = VALUE           write a local, a PASM cog's register or a VAR/DAT variable
 list                       the source around the selected cog's line
 time                       the current cycle
 help / quit"""
@@ -83,6 +88,7 @@ class CommandLoop:
             "bt": self.do_bt, "backtrace": self.do_bt, "where": self.do_bt, "frame": self.do_frame,
             "up": self.do_up, "down": self.do_down, "print": self.do_print, "p": self.do_print,
             "set": self.do_set, "list": self.do_list, "l": self.do_list, "time": self.do_time,
+            "regs": self.do_regs, "registers": self.do_regs,
             "help": self.do_help, "quit": self.do_quit, "q": self.do_quit,
         }
 
@@ -150,6 +156,15 @@ class CommandLoop:
         if not arg:
             raise DebugError("break what? (break 42, break stepper.spin:42, break pin 5, break if x == 3)")
         low = arg.lower()
+        m = re.fullmatch(r"cog\s+(\S+)\s+@\s*(\S+)(?:\s+if\s+(.+))?", arg.strip(), re.IGNORECASE)
+        if m:
+            where = m.group(2)
+            spot = _int(where) if where[:1].isdigit() or where[:1] == "$" else where
+            bp = self.dbg.break_pasm(_int(m.group(1)), spot, m.group(3))
+            self.say(f"breakpoint {bp.describe()}")
+            return
+        if low.startswith("cog "):
+            raise DebugError("break cog N @ADDR (a cog address such as $01A, or a DAT label: break cog 1 @loop)")
         if low.startswith("pin "):
             bp = self.dbg.break_on_pin(_int(arg[4:]))
         elif low.startswith("if "):
@@ -177,12 +192,14 @@ class CommandLoop:
                 self.say(bp.describe())
         elif arg.startswith("c"):
             self.do_cogs("")
+        elif arg.startswith("r"):
+            self.do_regs("")
         elif arg.startswith("w"):
             log = self.dbg.chip.warning_log
             for w in (log.items if log else []):
                 self.say(w.render())
         else:
-            raise DebugError("info breakpoints | info cogs | info warnings")
+            raise DebugError("info breakpoints | info cogs | info registers | info warnings")
 
     # ------------------------------------------------------------------ running
     def _time(self, arg: str) -> Optional[int]:
@@ -201,6 +218,9 @@ class CommandLoop:
         self.show_stop(stop)
 
     def do_step(self, arg: str) -> None:
+        if self.dbg.cog().kind == "pasm":
+            self.do_stepi(arg)                  # a PASM cog's step is an instruction
+            return
         self._repeat(self.dbg.step, arg)
 
     def do_next(self, arg: str) -> None:
@@ -258,6 +278,18 @@ class CommandLoop:
                 for name, values in f.array_values.items():
                     shown = ", ".join(str(signed(v)) for v in values[:8]) + (", ..." if len(values) > 8 else "")
                     self.say(f"      {name}[{len(values)}] = {shown}")
+
+    def do_regs(self, arg: str) -> None:
+        view = self.dbg.cog()
+        if view.kind != "pasm":
+            raise DebugError(f"cog {view.id} runs Spin: 'bt' shows its locals, 'print' its variables")
+        c = self.dbg.chip.cogs[view.id]
+        flags = c.ram[512]
+        self.say(f"cog {view.id} at {self.dbg.pasm_where(c)}")
+        self.say(f"  Z={flags & 1} C={flags >> 1}  PAR ${c.par:04X}  OUTA ${c.outa:08X}  DIRA ${c.dira:08X}  "
+                 f"loaded from hub ${c.code_addr:04X}")
+        for k, label, value in self.dbg.registers(view.id):
+            self.say(f"  ${k:03X} {label:<12} = {signed(value)} (${value:08X})")
 
     def do_frame(self, arg: str) -> None:
         frames = self.dbg.stack()
@@ -319,10 +351,12 @@ class CommandLoop:
 
     def do_list(self, arg: str) -> None:
         frame = self.dbg._frame()
-        if frame is None or frame.path is None:
+        place = (frame.path, frame.line) if frame is not None else self.dbg.pasm_line()
+        if place is None or place[0] is None:
             raise DebugError("no source line for the selected cog")
-        for n, text in self.dbg.source_lines(frame.path, frame.line):
-            mark = "=>" if n == frame.line else "  "
+        path, line = place
+        for n, text in self.dbg.source_lines(path, line):
+            mark = "=>" if n == line else "  "
             self.say(f"{mark}{n:>5}  {text.rstrip()}")
 
     def do_help(self, arg: str) -> None:
@@ -333,7 +367,13 @@ class CommandLoop:
 
 
 def _int(text: str) -> int:
+    """A number as Spin or Python writes it: ``12``, ``$1A``, ``%1010``, ``0x1A``."""
+    t = text.strip().replace("_", "")
     try:
-        return int(text.strip().replace("_", ""), 0)
+        if t[:1] == "$":
+            return int(t[1:], 16)
+        if t[:1] == "%":
+            return int(t[1:], 2)
+        return int(t, 0)
     except ValueError:
         raise DebugError(f"expected a number, got {text.strip()!r}") from None

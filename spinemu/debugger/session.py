@@ -18,27 +18,29 @@ What can stop a run (each a :class:`Breakpoint`):
   that wrote any of its bytes (the chip's ``watch`` bits: writes to watched
   longs already leave the fast path);
 * a **condition** (``break if EXPR``, or a line breakpoint ``... if EXPR``):
-  checked at the start of every Spin line of every cog, in that cog's frame.
+  checked at the start of every Spin line of every cog, in that cog's frame;
+* a **PASM instruction** (a DAT label, a DAT line, or ``cog N @$01A``):
+  before a PASM cog runs it (:mod:`spinemu.debugger.pasm_cogs`).
 
 Stepping (:meth:`Debugger.step`, :meth:`~Debugger.next`,
 :meth:`~Debugger.finish`, :meth:`~Debugger.stepi`) follows one cog while
-every cog runs.  Cogs are read through views (:mod:`spinemu.debugger.frames`)
-chosen by what runs them, so a PASM cog gets its own view and stepper when
-PASM runs.
+every cog runs: a Spin cog by line or bytecode, a PASM cog by instruction
+(:mod:`spinemu.debugger.pasm_cogs`).  Cogs are read through views
+(:mod:`spinemu.debugger.frames`) chosen by what runs them.
 """
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Optional
 
 from ..chip.blocks import WATCHPOINT
-from ..chip.checks import write_size as _write_size
 from ..chip.cog import RUNNING, STOPPED
 from ..chip.control import Halted
 from ..diagnostics import SpinError
 from .expr import REGISTERS, Expression, ExpressionError
 from .frames import cog_view, short_path, signed
+from .pasm_cogs import PasmDebugging, is_pasm
 
 __all__ = ["Debugger", "Breakpoint", "Stop", "DebugError"]
 
@@ -53,9 +55,12 @@ class Breakpoint:
 
     Attributes:
         number: its number (for ``delete``).
-        kind: ``"line"``, ``"pin"``, ``"watch"`` or ``"condition"``.
+        kind: ``"line"``, ``"pin"``, ``"watch"``, ``"condition"`` or ``"pasm"``.
         text: how it was given.
         addrs: for a line breakpoint, the bytecode addresses it stops at.
+        hubs: the hub addresses of PASM instructions it stops at (in any
+            PASM cog loaded with them): a DAT label or a DAT line.
+        cog_addr: ``(cog, cog address)`` for ``break cog N @ADDR``.
         pin: for a pin breakpoint.
         var: for a watchpoint, ``(Instance, Variable)``.
         condition: an :class:`~spinemu.debugger.expr.Expression`, or ``None``.
@@ -67,6 +72,8 @@ class Breakpoint:
     kind: str
     text: str
     addrs: frozenset = frozenset()
+    hubs: frozenset = frozenset()
+    cog_addr: Optional[tuple] = None
     pin: Optional[int] = None
     var: Optional[tuple] = None
     condition: Optional[Expression] = None
@@ -91,6 +98,11 @@ class Stop:
         cycle: when.
         detail: one line for people.
         breakpoint: the :class:`Breakpoint` that stopped it, if any.
+        pc: the bytecode it is about (the writer's, for a pin or a
+            watchpoint); for a PASM cog, the hub address of the instruction
+            (-1 for none).
+        steps: the PASM instructions a step ran
+            (:class:`~spinemu.chip.pasm_cog.PasmStep`).
     """
 
     reason: str
@@ -98,7 +110,8 @@ class Stop:
     cycle: int
     detail: str
     breakpoint: Optional[Breakpoint] = None
-    pc: Optional[int] = None        # the bytecode it is about (the writer's, for a pin or a watchpoint)
+    pc: Optional[int] = None
+    steps: list = field(default_factory=list)
 
     def __str__(self) -> str:
         return self.detail
@@ -106,16 +119,17 @@ class Stop:
 
 @dataclass
 class _Step:
-    kind: str                   # "step", "next", "finish", "stepi"
+    kind: str                   # "step", "next", "finish", "stepi"; "pasm-stepi", "pasm-next"
     cog: int
     line: tuple = ()
     dbase: int = 0
     count: int = 0
     method: Optional[str] = None
     drops_result: bool = False
+    target: int = -1            # pasm-next: the cog address after the call
 
 
-class Debugger:
+class Debugger(PasmDebugging):
     """A program under the debugger.
 
     Args:
@@ -162,6 +176,7 @@ class Debugger:
         self._skip: Optional[tuple] = None  # (cog, pc): resume there without stopping again
         self._interrupt = False
         self.last_stop: Optional[Stop] = None
+        self._init_pasm()
         self.chip.advance(0)                # boot: cog 0 is at the first method's first bytecode
 
     # ------------------------------------------------------------------ time and cogs
@@ -194,6 +209,7 @@ class Debugger:
     # ------------------------------------------------------------------ breakpoints
     def _add(self, bp: Breakpoint) -> Breakpoint:
         self.breakpoints.append(bp)
+        self._add_pasm(bp)
         if bp.kind == "line":
             for a in bp.addrs:
                 self._line_addrs.setdefault(a, []).append(bp)
@@ -213,16 +229,28 @@ class Debugger:
         self._numbers += 1
         return self._numbers
 
+    def _breakpoint(self, kind: str, text: str, **kw) -> Breakpoint:
+        return Breakpoint(self._number(), kind, text, **kw)
+
+    @staticmethod
+    def _error(message: str) -> DebugError:
+        return DebugError(message)
+
     def break_at(self, location: str, condition: Optional[str] = None, temporary: bool = False) -> Breakpoint:
         """Stop before a Spin line runs: ``"42"``, ``"stepper.spin:42"``, ``"runStepper"`` or ``"motor.setMode"``.
 
+        A DAT line or a DAT label (``"loop"``, ``"obj.loop"``) stops a PASM
+        cog before it runs the instruction loaded from there (any PASM cog
+        loaded with that code).
+
         Raises:
-            DebugError: no code was made from that line, or no such method.
+            DebugError: no code was made from that line, or no such method or label.
         """
         addrs, text = self._resolve_location(location)
+        spin, dat = self._pasm_location(addrs)
         cond = Expression(condition) if condition else None
-        return self._add(Breakpoint(self._number(), "line", text, frozenset(addrs), condition=cond,
-                                    temporary=temporary))
+        return self._add(Breakpoint(self._number(), "line" if spin else "pasm", text, frozenset(spin),
+                                    frozenset(dat), condition=cond, temporary=temporary))
 
     def break_on_pin(self, pin: int) -> Breakpoint:
         """Stop after a bytecode changes pin ``pin`` (its level or whether it is driven)."""
@@ -251,6 +279,7 @@ class Debugger:
             raise DebugError(f"there is no breakpoint #{number}")
         for bp in doomed:
             self.breakpoints.remove(bp)
+            self._delete_pasm(bp)
             if bp.kind == "line":
                 for a in bp.addrs:
                     self._line_addrs[a].remove(bp)
@@ -288,7 +317,13 @@ class Debugger:
                 raise DebugError(f"no code was made from {short_path(path)}:{line} "
                                  f"(a comment, a declaration or a blank line?)")
             return addrs, f"{short_path(path)}:{line}"
-        method = self._find_method(loc)
+        try:
+            method = self._find_method(loc)
+        except DebugError:
+            label = self._pasm_label(loc)
+            if label is None:
+                raise
+            return [label[0]], label[1]
         return [method.start], f"{loc} ({short_path(method.path)}:{self.info.position(method.start)[1]})"
 
     def _find_file(self, fname: str) -> str:
@@ -312,7 +347,7 @@ class Debugger:
         else:
             cands = [m for m in self.info.methods if m.name.lower() == mname.lower()]
         if not cands:
-            raise DebugError(f"no line, file:line or method '{name}'")
+            raise DebugError(f"no line, file:line, method or DAT label '{name}'")
         if len({m.start for m in cands}) > 1:
             raise DebugError(f"'{name}' is a method of several objects: write object.{mname}")
         return cands[0]
@@ -387,6 +422,12 @@ class Debugger:
         self._step = None
         return Halted(stop.reason)
 
+    def _writer(self, c) -> tuple:
+        """Where the cog that is changing a pin or writing hub RAM is, and the address its line is found at."""
+        if is_pasm(c):
+            return self._pasm_writer(c)
+        return self._where(c, c.pc - 1), (c.pc - 1) & 0xFFFF
+
     def _on_pins(self, c, t: int) -> None:
         for bp in self._pin_bps:
             now = self._pin_now(bp.pin, t)
@@ -394,19 +435,19 @@ class Debugger:
                 old = self._pin_levels.get(bp.pin)
                 self._pin_levels[bp.pin] = now
                 bp.hits += 1
+                where, pc = self._writer(c)
                 self._pending = Stop("pin", c.id, t, f"pin P{bp.pin}: {_pin_text(old)} -> {_pin_text(now)} "
-                                     f"(cog {c.id} at {self._where(c, c.pc - 1)})", bp, (c.pc - 1) & 0xFFFF)
+                                     f"(cog {c.id} at {where})", bp, pc)
 
-    def _on_write(self, c, addr: int, op: int, t: int) -> None:
-        size = _write_size(op)
+    def _on_write(self, c, addr: int, size: int, t: int) -> None:
         a = addr & ~(size - 1)
         for bp in self._watch_bps:
             inst, v = bp.var
             if a < v.end and a + size > v.addr:
                 bp.hits += 1
+                where, pc = self._writer(c)
                 self._pending = Stop("watchpoint", c.id, t, f"watchpoint {v.name}: cog {c.id} at "
-                                     f"{self._where(c, c.pc - 1)} writes it: {self._read_var(v)}", bp,
-                                     (c.pc - 1) & 0xFFFF)
+                                     f"{where} writes it: {self._read_var(v)}", bp, pc)
                 return
 
     def _pin_now(self, pin: int, t: Optional[int] = None):
@@ -439,10 +480,11 @@ class Debugger:
     def _start_step(self, kind: str, cog: Optional[int], count: int = 1) -> None:
         n = self.selected if cog is None else cog
         view = self.cog(n)
+        if view.kind == "pasm":
+            return self._start_pasm_step(kind, n, count)
         if view.kind != "spin":
-            what = "runs PASM" if view.kind == "pasm" else "does not run Spin bytecode"
-            raise DebugError(f"cog {n} {what}; the debugger steps Spin cogs only (for now: "
-                             f"'cogs' shows where it is, 'spinemu run --trace-cog {n}' logs its instructions)")
+            raise DebugError(f"cog {n} does not run Spin bytecode or PASM; the debugger cannot step it "
+                             f"('cogs' shows where it is)")
         if self.chip.cogs[n].state != RUNNING and kind != "finish":
             pass                                # it is waiting: the step ends when it goes on
         c = self.chip.cogs[n]
@@ -453,7 +495,11 @@ class Debugger:
         self.selected = n
 
     def step(self, cog: Optional[int] = None, limit: Optional[int] = None) -> Stop:
-        """Run until cog ``cog`` (default: the selected one) starts another Spin line; into calls."""
+        """Run until cog ``cog`` (default: the selected one) starts another Spin line; into calls.
+
+        On a PASM cog, :meth:`step` and :meth:`stepi` run one instruction (``stepi``: ``count``) and
+        :meth:`next` runs over a ``call``; the stop's ``steps`` are the instructions it ran.
+        """
         self._start_step("step", cog)
         return self._go(limit)
 
@@ -495,8 +541,9 @@ class Debugger:
             self._step = None
             return Stop("end", None, self.chip.now, f"the program has ended ({self.ended})")
         c = self.chip.cogs[self.selected]
-        if c.state == RUNNING:
+        if c.state == RUNNING and c.engine == "spin":
             self._skip = (c.id, c.pc)
+        self._sync_pasm()
         until = None if limit is None else self.chip.now + limit
         self.last_stop = None
         self.frame_index = 0
@@ -541,6 +588,10 @@ class Debugger:
             t = self.chip.now
             return {"cnt": t & 0xFFFFFFFF, "ina": self.chip.ina(t), "outa": c.outa, "dira": c.dira,
                     "par": c.par}[low]
+        if frame is None and "." not in name and is_pasm(c):
+            value = self._pasm_value(c, name, index)       # a register of the PASM cog, by its DAT label
+            if value is not None:
+                return value
         if frame is not None and frame.method is not None and "." not in name:
             slot = next((s for s in frame.method.slots if s.name.lower() == low), None)
             if slot is not None:
@@ -576,9 +627,12 @@ class Debugger:
         return signed(value) if v.size == 4 else value
 
     def set_value(self, name: str, value: int, index: Optional[int] = None) -> None:
-        """Write a local/parameter of the selected frame or a VAR/DAT variable."""
+        """Write a local/parameter of the selected frame, a PASM cog's register (by label) or a VAR/DAT variable."""
         frame = self._frame()
         low = name.lower()
+        c = self.chip.cogs[self.selected]
+        if frame is None and "." not in name and is_pasm(c) and self._set_pasm_register(c, name, value, index):
+            return
         if frame is not None and frame.method is not None and "." not in name:
             slot = next((s for s in frame.method.slots if s.name.lower() == low), None)
             if slot is not None:

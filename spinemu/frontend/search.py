@@ -178,19 +178,20 @@ class SearchPath:
         return self._listing[folder]
 
     def find(self, name: str, from_dir: str) -> Optional[Found]:
-        """The file ``name`` stands for (exact match first, then any letter case), or None.
+        """The file ``name`` stands for, or None: folder by folder, an exact match, then one in any letter case.
+
+        A folder's own file in another case comes before an exact match in a later folder,
+        as on Windows, where the Propeller Tool opens the project's copy whatever its case.
 
         Raises:
-            AmbiguousName: no exact match, and several files of one folder match in another case.
+            AmbiguousName: no exact match in a folder, and several of its files match in another case.
         """
-        folders = self.folders(from_dir)
-        for f in folders:
+        head, base = os.path.split(name)
+        low = base.lower()
+        for f in self.folders(from_dir):
             cand = os.path.join(f.path, name)
             if os.path.isfile(cand):
                 return Found(cand)
-        head, base = os.path.split(name)
-        low = base.lower()
-        for f in folders:
             where = os.path.join(f.path, head) if head else f.path
             matches = [e for e in self._entries(where) if e.lower() == low
                        and os.path.isfile(os.path.join(where, e))]

@@ -361,7 +361,8 @@ class ExprTranslator(EvalOrder):
             return x
         if op == "-":
             if x.const is not None and isinstance(node.operand, (A.Number, A.NameRef, A.ObjConst)):
-                return X(f"-{x.paren(11)}", 11, wrapped=x.const != -0x80000000, const=_signed(-x.const))
+                # -NEGX leaves 32 bits (a constant may be listed by its bits: $8000_0000)
+                return X(f"-{x.paren(11)}", 11, wrapped=_signed(x.const) != -0x80000000, const=_signed(-x.const))
             return X(f"-{x.paren(11)}", 11, wrapped=False)
         if op == "!":
             return X(f"~{x.paren(11)}", 11, wrapped=x.wrapped)

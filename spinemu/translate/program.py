@@ -220,6 +220,11 @@ class ObjectTranslator:
         found = self._offsets.get((pos.line, pos.col))
         return found if found is not None else self.infos[key(method.name)].offset
 
+    def known_offset(self, pos):
+        """Object offset of the first bytecode compiled at ``pos``, or None (nothing was compiled there)."""
+        self._index_spans()
+        return self._offsets.get((pos.line, pos.col))
+
     def compiled_at(self, pos) -> bytes:
         """The bytecode the compiler made for the statement at ``pos``, at its real place (so a jump has its real size)."""
         self._index_spans()

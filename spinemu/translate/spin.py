@@ -281,13 +281,13 @@ def lookupz(index: int, items, costs=None) -> int:
 def lookdown(value: int, items, costs=None) -> int:
     """Spin ``lookdown(v: a, b, c)``: the position of ``v`` counting from 1, or 0."""
     found = _search(value, items, costs, True)[0]
-    return 0 if found is None else found + 1
+    return 0 if found is None else wrap(found + 1)      # a position past $7FFF_FFFF is negative, as in Spin
 
 
 def lookdownz(value: int, items, costs=None) -> int:
     """Spin ``lookdownz(v: a, b, c)``: the position of ``v`` counting from 0, or 0."""
     found = _search(value, items, costs, True)[0]
-    return 0 if found is None else found
+    return 0 if found is None else wrap(found)
 
 
 def span(low: int, high: int) -> range:

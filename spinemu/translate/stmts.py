@@ -77,6 +77,8 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.held = 0
         self.cur_pos = method.pos
         self.path = method.pos.path
+        self.stmts: list = []               # the statements being translated, outermost first
+        self._node_offsets: dict = {}       # id(statement) -> {id(expression): object offset}
 
     # ------------------------------------------------------------------ helpers for exprs.py
     def unsupported(self, what: str, node):
@@ -101,17 +103,18 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         return name
 
     # ------------------------------------------------------------------ costs
-    def piece(self, fn, loop_count: bool = False, **kw) -> list:
+    def piece(self, fn, loop_count: bool = False, offset: int = None, **kw) -> list:
         """Price the bytecode the compiler makes for ``fn()`` (a statement or expression).
 
         A lookup whose items are evaluated one by one at run time (see
         ``x_Lookup``) is priced without its items (laid out, so that addresses
         keep their size, but left out): the runtime pays each item it reaches.
         ``last_data``: the bytecode priced (the calls in such items run inside
-        the lookup's search).
+        the lookup's search).  ``offset``: where the piece is laid out (else
+        where the current statement starts).
         """
         self.mc.lazy = frozenset(id(n) for n in self.lazy_lookups())
-        data = self._compiled(fn, loop_count)
+        data = self._compiled(fn, loop_count, offset)
         self.last_data = data
         return price(self.T, data, **kw)
 
@@ -121,7 +124,7 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             self._lazy = [n for n in A.walk(self.method.body) if isinstance(n, A.Lookup) and self.lazy_items(n)]
         return self._lazy
 
-    def _compiled(self, fn, loop_count: bool) -> bytes:
+    def _compiled(self, fn, loop_count: bool, offset: int = None) -> bytes:
         mc = self.mc
         saved = mc.code, mc.loops
         mc.code = CodeBuffer()
@@ -133,17 +136,15 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
             mc.code.mark(nxt)
             mc.code.mark(end)
             # laid out where the statement really is, so that address pushes get their real size
-            spans, _ = mc.code.layout(self.objt.offset_of(self.cur_pos, self.method))
+            spans, _ = mc.code.layout(self.objt.offset_of(self.cur_pos, self.method) if offset is None else offset)
         finally:
             mc.code, mc.loops = saved
         out = []
-        for k, sp in enumerate(spans):
+        for sp in spans:
             if sp.pos is None and sp.note == "string":
                 continue                    # the string pool
-            if sp.pos is _ITEMS:            # a lookup item paid at run time; the lookup's own LOOK_DONE stays
-                last = k + 1 == len(spans) or spans[k + 1].pos is not _ITEMS
-                if not (last and sp.data == b"\x0f"):
-                    continue
+            if sp.pos is _ITEMS:            # a lookup item paid at run time
+                continue
             out.append(sp.data)
         return b"".join(out)
 
@@ -200,22 +201,81 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
                     self.code.call_depths[line] = depth
 
     def expr_ops(self, node, at=None) -> list:
-        """The priced bytecode of expression ``node``, laid out where the code at ``at`` (a position:
-        a branch, a case value, a loop's test) is, else where the current statement is."""
+        """The priced bytecode of expression ``node``, laid out where the compiler put it (a lookup's
+        end address is one byte or two by where it is), else where the code at ``at`` (a position: a
+        branch, a case value, a loop's test) is, else where the current statement is."""
+        offset = self.node_offset(node)
         if at is None:
-            return self.piece(lambda: self.mc.expr(node))
+            return self.piece(lambda: self.mc.expr(node), offset=offset)
         saved, self.cur_pos = self.cur_pos, at
         try:
-            return self.piece(lambda: self.mc.expr(node))
+            return self.piece(lambda: self.mc.expr(node), offset=offset)
         finally:
             self.cur_pos = saved
+
+    def node_offset(self, node):
+        """The object offset of the first bytecode of expression ``node`` in an enclosing statement being
+        translated, as the compiler lays the statement out (None: not found)."""
+        for st in reversed(self.stmts):
+            found = self._node_offsets.get(id(st))
+            if found is None:
+                found = self._node_offsets[id(st)] = self._offsets_in(st)
+            if id(node) in found:
+                return found[id(node)]
+        return None
+
+    def _offsets_in(self, st) -> dict:
+        """``{id(expression): object offset}`` of statement ``st`` compiled whole where it is."""
+        mc = self.mc
+        marks: dict = {}
+        had = "expr" in mc.__dict__
+        inner = mc.expr
+
+        def expr(n):
+            label = Label()
+            mc.code.mark(label)
+            marks.setdefault(id(n), (n, label))     # (the node kept alive: its id stays its own)
+            inner(n)
+
+        mc.expr = expr
+        mc.lazy = frozenset(id(n) for n in self.lazy_lookups())
+        saved = mc.code, mc.loops
+        mc.code = CodeBuffer()
+        mc.code.pos = st.pos
+        nxt, end = Label(), Label()
+        mc.loops = [cstmts._Loop(nxt, end)]
+        try:
+            mc.block([st])
+            mc.code.mark(nxt)
+            mc.code.mark(end)
+            at = mc.code.label_offsets(self._start_of(mc.code, st))
+        finally:
+            mc.code, mc.loops = saved
+            if had:
+                mc.expr = inner
+            else:
+                del mc.expr
+        return {k: at[label] for k, (_, label) in marks.items()}
+
+    def _start_of(self, code, st) -> int:
+        """Where the compiled object puts statement ``st`` (compiled into ``code``): its first span whose
+        source position the object lists (a loop with its test at the end starts with its body)."""
+        start = self.objt.offset_of(st.pos, self.method)
+        for _ in range(4):              # an address push before the anchor may change size with the start
+            spans, _ = code.layout(start)
+            anchor = next(((sp.offset, real) for sp in spans if sp.data and getattr(sp.pos, "line", None)
+                           and (real := self.objt.known_offset(sp.pos)) is not None), None)
+            if anchor is None or anchor[0] == anchor[1]:
+                break
+            start += anchor[1] - anchor[0]
+        return start
 
     def lookup_item_cost(self, exprs, down: bool, is_range: bool, each: bool = False) -> tuple:
         """``(cycles of the item, extra cycles when it matches)`` of one lookup/lookdown item.
 
-        ``each`` (items paid one by one at run time): ``(cycles up to its call
-        or register write, or before its register read, cycles from there on,
-        extra when it matches)``.
+        ``each`` (items paid one by one at run time): ``(cycles up to its last
+        call or register write, or before its last register read, cycles from
+        there on, extra when it matches)``.
         """
         T = self.T
         ops = [o for e in exprs for o in self.expr_ops(e)]
@@ -223,9 +283,11 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         table = getattr(T, name)
         if each:
             ops.append(Op(0x10, table[False]))
-            cut = next((k + (o.kind in ("call", "write")) for k, o in enumerate(ops)
-                        if o.kind in ("call", "write", "read", "look")), len(ops))
-            return chain(ops[:cut]), chain(ops[cut:]), table[True] - table[False]
+            # around its last event, as a case value: an item ``f(outa)`` pays its call before the
+            # method runs, though the register read comes first
+            around = _around_event(ops)
+            before, after = around if isinstance(around, tuple) else (ops, [])
+            return chain(before), chain(after), table[True] - table[False]
         found, missed = ceil16(table[True] + 12), ceil16(table[False] + 12)
         return sum(ceil16(o.rest + 12) for o in ops) + missed, found - missed
 
@@ -290,7 +352,11 @@ class MethodTranslator(ExprTranslator, LoopTranslator):
         self.cur_pos = st.pos
         self.code.comments_before(st.pos.line)
         method = getattr(self, "s_" + type(st).__name__)
-        return method(st)
+        self.stmts.append(st)
+        try:
+            return method(st)
+        finally:
+            self.stmts.pop()
 
     def flush(self, main, node) -> tuple:
         """Emit the hoisted lines and ``main`` (a line or None); ``(first, last)``.
@@ -806,8 +872,9 @@ class _Compiler(cstmts.MethodCompiler):
 
     The items of the lookups in ``lazy`` (ids of nodes) are compiled with the
     code position ``_ITEMS`` (from the end of the lookup's value up to its
-    LOOK_DONE), so that the translator can leave them out of a statement's
-    price but still lay them out where they are.
+    LOOK_DONE, which stays where the lookup is), so that the translator can
+    leave them out of a statement's price but still lay them out where they
+    are.
     """
 
     lazy = frozenset()
@@ -827,6 +894,11 @@ class _Compiler(cstmts.MethodCompiler):
         self.expr = expr
         try:
             super().x_Lookup(node)
+            # its LOOK_DONE (before the end label) belongs to where the lookup is, not to its items: a
+            # lookup that is another lazy lookup's value keeps it (a match gives it back)
+            done = code.items[-2]
+            if done[1] == b"\x0f":
+                done[2] = pos
         finally:
             if had:
                 self.expr = inner

@@ -159,6 +159,12 @@ def _weave_body(stmts: list, table: dict, depths: dict, lookups: dict) -> list:
         for field in ("body", "orelse", "finalbody"):
             if isinstance(getattr(s, field, None), list) and not isinstance(s, ast.FunctionDef):
                 setattr(s, field, _weave_body(getattr(s, field), table, depths, lookups))
+        if isinstance(s, ast.FunctionDef):
+            # a lookup item's or case value's local function: its lines are paid with the item, but a
+            # lookup in it pays its own items as it reaches them
+            for inner in ast.walk(s):
+                if isinstance(inner, ast.stmt) and inner is not s and inner.lineno in lookups:
+                    _add_lookup_costs(inner, lookups[inner.lineno])
         if isinstance(s, ast.Try):
             for h in s.handlers:
                 h.body = _weave_body(h.body, table, depths, lookups)

@@ -3,7 +3,7 @@
 Usage::
 
     python tests/benchmarks/windows_case.py --library /opt/oracles/propeller \\
-        --openspin /opt/oracles/OpenSpin/build/openspin [--jobs 2] [--show 20]
+        --openspin /opt/oracles/OpenSpin/build/openspin [--jobs 2] [--show 20] [--standard]
 
 Finds every library .spin file that names an OBJ or DAT ``file`` which has
 no exact match in its folder but one in another letter case (what the
@@ -12,7 +12,11 @@ object that does.  Each such
 file is compiled as a top object by spinemu (which finds the names in any
 case, with a warning) and, in a copy of its folder where every such name also
 exists exactly as written ("fixed by hand"), by OpenSpin; the report gives how
-many images are byte-identical.  Not part of the test run (it needs OpenSpin
+many images are byte-identical.  ``--standard`` also gives both compilers the
+Propeller Tool's standard objects (``FullDuplexSerial``, ``TV`` ...), in a
+folder built from the library's copies as ``library_runs.py`` builds it:
+spinemu finds it on ``SPINEMU_PATH``; OpenSpin gets the ones a project lacks copied
+into its folder (with ``-L`` it would take them before the project's own copies).  Not part of the test run (it needs OpenSpin
 and the library).
 """
 from __future__ import annotations
@@ -76,10 +80,20 @@ def _select(path: str):
     return path, bool(case_mismatches(path)) or uses_other_case(path)
 
 
-def _fixed_copy(folder: str, tmp: str) -> str:
-    """A copy of ``folder`` in which every name used in another case also exists as written."""
+def _fixed_copy(folder: str, tmp: str, std: str = "") -> str:
+    """A copy of ``folder`` in which every name used in another case also exists as written.
+
+    ``std``: a folder of standard objects; each one the project has in no letter case is
+    copied in too (OpenSpin's ``-L`` folders come before the source's own folder, where
+    the Propeller Tool looks in the project first).
+    """
     dst = os.path.join(tmp, "proj")
     shutil.copytree(folder, dst)
+    if std:
+        have = {e.lower() for e in os.listdir(dst)}
+        for name in os.listdir(std):
+            if name.lower() not in have:
+                shutil.copyfile(os.path.join(std, name), os.path.join(dst, name))
     for fname in os.listdir(dst):
         if fname.lower().endswith(".spin"):
             for _kind, name, actual in case_mismatches(os.path.join(dst, fname)):
@@ -90,18 +104,19 @@ def _fixed_copy(folder: str, tmp: str) -> str:
 
 
 def check(args):
-    path, openspin = args
+    path, openspin, std = args
     from spinemu.compiler import compile_file
     from spinemu.diagnostics import SpinError
     from spinemu.frontend.search import SearchPath
     with tempfile.TemporaryDirectory() as tmp:
-        proj = _fixed_copy(os.path.dirname(path), tmp)
+        proj = _fixed_copy(os.path.dirname(path), tmp, std)
         out = os.path.join(tmp, "ref.binary")
         r = subprocess.run([openspin, "-q", "-b", os.path.join(proj, os.path.basename(path)), "-o", out],
                            capture_output=True, text=True, errors="replace")
         ref = open(out, "rb").read() if r.returncode == 0 and os.path.exists(out) else None
     try:
-        prog = compile_file(path, search=SearchPath(environ={}, standard=False))
+        environ = {"SPINEMU_PATH": std} if std else {}
+        prog = compile_file(path, search=SearchPath(environ=environ, standard=False))
         mine, warnings, err = prog.binary, len(prog.warnings), None
     except SpinError as exc:
         mine, warnings, err = None, 0, str(exc).splitlines()[0]
@@ -120,7 +135,14 @@ def main(argv=None) -> None:
     ap.add_argument("--openspin", default="/opt/oracles/OpenSpin/build/openspin")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--show", type=int, default=20)
+    ap.add_argument("--standard", action="store_true",
+                    help="give both compilers the standard objects built from the library's copies")
     a = ap.parse_args(argv)
+    std = ""
+    if a.standard:
+        from library_runs import build_standard_folder, spin_files
+        std = tempfile.mkdtemp(prefix="spinemu-standard-")
+        build_standard_folder(spin_files(a.library), std)
     every = sorted(os.path.join(root, n) for root, _dirs, names in os.walk(a.library)
                    for n in names if n.lower().endswith(".spin"))
     direct = sum(1 for p in every if case_mismatches(p))
@@ -128,7 +150,7 @@ def main(argv=None) -> None:
     shown = 0
     with ProcessPoolExecutor(a.jobs) as pool:
         files = [p for p, hit in pool.map(_select, every, chunksize=8) if hit]
-        for path, verdict, warnings, detail in pool.map(check, [(p, a.openspin) for p in files], chunksize=4):
+        for path, verdict, warnings, detail in pool.map(check, [(p, a.openspin, std) for p in files], chunksize=4):
             counts[verdict] = counts.get(verdict, 0) + 1
             if verdict != "identical" and shown < a.show:
                 shown += 1

@@ -97,6 +97,15 @@ def test_a_write_into_code_names_the_method_it_hits():
     assert "method main of write_into_code.spin" in message("write_into_code")
 
 
+def test_a_pasm_hub_write_into_code_warns_with_its_size_at_its_dat_line():
+    prog = compile_source("PUB main\n  cognew(@entry, 0)\n  waitcnt(cnt + 5_000)\nDAT\n        org 0\n"
+                          "entry   mov a, #$12\n        wrword a, #$14\n        cogid a\n        cogstop a\n"
+                          "a       long 0\n")
+    r = Chip(prog.binary, debug_info=prog.debug_info()).run(max_cycles=100_000)
+    assert [(w.kind, w.line, w.cog) for w in r.runtime_warnings] == [("write-into-code", 7, 1)]
+    assert r.runtime_warnings[0].message.startswith("word write to $0014 changes the program's own code")
+
+
 def test_a_local_read_first_names_it_and_its_method():
     assert message("uninitialized").startswith("local 'sum' of average is read before it is assigned")
 

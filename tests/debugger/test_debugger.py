@@ -133,7 +133,7 @@ def test_continue_to_the_end_of_the_program(tmp_path):
 def test_mistakes_are_explained_and_the_session_goes_on(tmp_path):
     out = session(tmp_path, "break 3\nbreak nosuch\nprint nosuch\ncog 7\nwatch nothing\nfoo\ntime\n")
     assert "error: no code was made from" in after(out, "break 3")
-    assert "error: no line, file:line or method 'nosuch'" in after(out, "break nosuch")
+    assert "error: no line, file:line, method or DAT label 'nosuch'" in after(out, "break nosuch")
     assert "error: unknown name 'nosuch'" in after(out, "print nosuch")
     assert "error: cog 7 is not running" in after(out, "cog 7")
     assert "error: no VAR or DAT variable 'nothing'" in after(out, "watch nothing")
@@ -172,15 +172,16 @@ def test_a_debugged_run_is_the_same_run_to_the_cycle():
     assert dbg.chip.pin_trace().changes == plain.trace.changes and dbg.now == plain.end_cycle
 
 
-def test_a_pasm_cog_is_shown_but_not_stepped():
+def test_a_pasm_cog_is_shown_and_stepped_by_instruction():
     prog = compile_source("PUB main\n  cognew(@code, 0)\n  waitcnt(cnt + 10_000)\nDAT\ncode  nop\nloop  jmp #loop\n")
     dbg = Debugger(prog)
     dbg.run_for(5_000)
     view = dbg.cog(1)
     assert view.kind == "pasm" and view.place().startswith("PASM at cog $001: jmp #$001 (loop in ")
     assert view.place().endswith("main.spin), PAR $0000")
-    with pytest.raises(DebugError, match="steps Spin cogs only"):
-        dbg.step(cog=1)
+    stop = dbg.step(cog=1)
+    assert stop.reason == "step" and [(s.pc, s.executed) for s in stop.steps] == [(1, True)]
+    assert stop.detail.endswith("cog 1 at $001 (loop, main.spin:6): jmp #loop")
 
 
 def test_the_documented_session_prints_what_the_docs_show(update_golden, monkeypatch):

@@ -41,9 +41,19 @@ def test_an_object_named_in_another_letter_case_is_found_with_a_warning(tmp_path
     assert compile_file(fixed).binary == prog.binary and compile_file(fixed).warnings == []
 
 
-def test_an_exact_match_anywhere_wins_over_another_case_nearer(tmp_path):
+def test_the_projects_own_file_in_another_case_wins_over_an_exact_match_in_a_later_folder(tmp_path):
+    # as on Windows: the Propeller Tool opens the project's Helper.spin for "helper", not a library's copy
     write(tmp_path / "src", "Helper.spin", "PUB f\n  return 1\n")
     write(tmp_path / "lib", "helper.spin", "PUB f\n  return 2\n")
+    top = write(tmp_path / "src", "top.spin", 'OBJ\n  h : "helper"\nPUB main\n  h.f\n')
+    prog = compile_file(top, include_dirs=[str(tmp_path / "lib")])
+    assert prog.layout.children[0].path.endswith(os.path.join("src", "Helper.spin"))
+    assert len(prog.warnings) == 1 and "spelled 'Helper.spin' on disk" in prog.warnings[0].message
+
+
+def test_an_exact_match_in_a_folder_wins_over_another_case_in_the_same_folder(tmp_path):
+    write(tmp_path / "lib", "helper.spin", "PUB f\n  return 2\n")
+    write(tmp_path / "lib", "Other.spin", "PUB f\n  return 3\n")
     top = write(tmp_path / "src", "top.spin", 'OBJ\n  h : "helper"\nPUB main\n  h.f\n')
     prog = compile_file(top, include_dirs=[str(tmp_path / "lib")])
     assert prog.warnings == []
