@@ -259,6 +259,8 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
         except RebootRequested:
             chip._reboot_key = tf + acc[op]
             raise
+        except IndexError:          # as the run loops: a stack or address past the end of memory
+            raise chip.fault(c, c.pc - 1, "stack or address out of hub range") from None
         c.bytecodes += 1
         if wlog is not None and wlog.total != warned:
             return None             # a runtime check warned: skipping its repeats would lose them

@@ -124,6 +124,16 @@ def test_a_waitcnt_already_passed_warns_as_in_the_exact_order():
     assert differences(image, 20_000_000) == []
 
 
+def test_a_stack_past_memory_while_the_fast_forward_learns_is_the_same_fault():
+    # seed 1864: a cog's frame goes past $FFFF while its loop is being learned; the learner raised a
+    # bare IndexError where the run loops report the fault
+    from schedule_compare import outcome
+    image = generated_image(1864)
+    want = outcome(image, False, 4_000_000, fast_forward=False)
+    assert want[0] == "EmulationError" and "out of hub range" in want[1]
+    assert outcome(image, True, 4_000_000) == want == outcome(image, False, 4_000_000)
+
+
 def test_a_generated_program_exercises_every_kind_of_meeting():
     # the generator's menu reaches locks, mailboxes, pins, cog control and stack peeks within the sample
     text = "\n".join(program(s) for s in SEEDS)
