@@ -86,17 +86,22 @@ class ConsoleSession:
             self.console.send(data, at_seconds=args.console_in_at or 0.0)
         self.out_path = args.console_out
         self._stack = contextlib.ExitStack()
-        raw = None
-        if self.out_path:
-            raw = self._stack.enter_context(open(self.out_path, "wb"))
-        if self.keyboard is not None:
-            self._stack.enter_context(self.keyboard)
         self.shows = not out.quiet and live_text
-        self.link = ConsoleLink(self.console, text_out=out.stdout if self.shows else None, raw_out=raw,
+        self.link = ConsoleLink(self.console, text_out=out.stdout if self.shows else None,
                                 keyboard=self.keyboard)
         self.out = out
 
     def __enter__(self) -> "ConsoleSession":
+        # the output file and the terminal's raw mode only for the run itself: an error in the
+        # options checked after this object is made leaves no file open and the terminal as it was
+        try:
+            if self.out_path:
+                self.link.raw_out = self._stack.enter_context(open(self.out_path, "wb"))
+            if self.keyboard is not None:
+                self._stack.enter_context(self.keyboard)
+        except BaseException:
+            self._stack.close()
+            raise
         return self
 
     def __exit__(self, *exc) -> None:

@@ -252,7 +252,8 @@ class RuntimeChecks:
             self._code_ranges = program_code_ranges(chip.mem, chip.header.pbase)
             watch = chip.watch
             for start, end in self._code_ranges:
-                for k in range(start >> 2, ((end - 1) >> 2) + 1):
+                # a corrupt image's method table can point past the hub: only hub longs are marked
+                for k in range(min(start, len(watch) << 2) >> 2, min(((end - 1) >> 2) + 1, len(watch))):
                     watch[k] |= PROGRAM
             chip.write_hooks.append(self.on_watched_write)
         if self.wants("pin-conflict"):
