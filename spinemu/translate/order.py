@@ -277,7 +277,8 @@ class EvalOrder:
             if mine.calls and (theirs.calls or theirs.paid or _hub_places(theirs.reads)) or \
                     mine.paid and theirs.events:
                 return True                     # its call would come after theirs, what it pays after an event
-            return overlap(mine.reads, theirs.writes)
+            # they would run first: what they write must not reach its reads, nor its writes miss their reads
+            return overlap(mine.reads, theirs.writes) or overlap(mine.writes, theirs.reads)
         if not (theirs.hoists or hoisted or self.event_mode and theirs.events):
             return False
         # their statements come first: a call of its own must not move after them, nor what it pays
