@@ -17,7 +17,6 @@ import contextlib
 import math
 import os
 import sys
-import tempfile
 import time
 from typing import Optional, Sequence, TextIO
 
@@ -128,6 +127,8 @@ def _width(text: str) -> int:
 def _write_atomic(path: str, data, binary: bool) -> None:
     """Write a whole file or nothing: to a temporary file first, then rename."""
     folder = os.path.dirname(os.path.abspath(path)) or "."
+    import tempfile
+
     fd, tmp = tempfile.mkstemp(prefix=".spinemu-", dir=folder)
     try:
         with os.fdopen(fd, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8"})) as f:

@@ -24,13 +24,12 @@ from __future__ import annotations
 
 import io
 from dataclasses import dataclass, field
-from fractions import Fraction
 from typing import Iterable, Optional, TextIO
 
 __all__ = ["PinTrace", "TraceFormatError", "read_log", "vcd_timescale"]
 
-_UNITS = [("s", Fraction(1)), ("ms", Fraction(1, 10**3)), ("us", Fraction(1, 10**6)),
-          ("ns", Fraction(1, 10**9)), ("ps", Fraction(1, 10**12)), ("fs", Fraction(1, 10**15))]
+#: VCD time units, as (name, powers of ten below a second)
+_UNITS = [("s", 0), ("ms", 3), ("us", 6), ("ns", 9), ("ps", 12), ("fs", 15)]
 
 
 def vcd_timescale(clock_hz: int) -> tuple[str, int]:
@@ -43,14 +42,14 @@ def vcd_timescale(clock_hz: int) -> tuple[str, int]:
     >>> vcd_timescale(1_000_000)
     ('1 us', 1)
     """
-    period = Fraction(1, clock_hz)
-    for name, unit in _UNITS:
+    for name, exp in _UNITS:
         for mult in (100, 10, 1):
-            ratio = period / (unit * mult)
-            if ratio.denominator == 1:
-                return f"{mult} {name}", int(ratio)
+            # one period in units of mult * 10**-exp s: 10**exp / (clock_hz * mult), when whole
+            units, rest = divmod(10**exp, clock_hz * mult)
+            if rest == 0 and units:
+                return f"{mult} {name}", units
     # A clock this odd cannot be represented exactly: round to femtoseconds.
-    return "1 fs", max(1, round(period / Fraction(1, 10**15)))
+    return "1 fs", max(1, round(10**15 / clock_hz))
 
 
 @dataclass

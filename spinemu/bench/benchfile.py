@@ -49,10 +49,14 @@ from .board import Bench, BenchPinError
 
 __all__ = ["load_bench", "read_bench"]
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover - Python 3.10
-    import tomli as tomllib
+
+def _toml():
+    """The TOML reader (imported when a bench file is read: most runs have none)."""
+    if sys.version_info >= (3, 11):
+        import tomllib
+    else:  # pragma: no cover - Python 3.10
+        import tomli as tomllib
+    return tomllib
 
 #: parameters whose string values are file names, relative to the bench file
 PATH_PARAMETERS = ("data",)
@@ -136,8 +140,8 @@ def read_bench(text: str, path: str = "<bench>", *, pin_count: int = 32, engine:
 
     lines = _Lines(text)
     try:
-        doc = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as e:
+        doc = _toml().loads(text)
+    except _toml().TOMLDecodeError as e:
         msg = str(e)
         m = re.search(r"\(at line (\d+), column (\d+)\)", msg)
         where = (int(m.group(1)), int(m.group(2)), 1) if m else None

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import bisect
 import os
-import tempfile
 from dataclasses import dataclass, field
 from typing import Optional
 
@@ -18,7 +17,6 @@ from ..frontend.source import SourceText
 from ..image import to_eeprom
 from .hints import program_hints
 from .link import link, total_var
-from .listing import format_listing
 from .objcode import ObjectCompiler
 
 __all__ = ["compile_file", "compile_source", "CompiledProgram", "LineTable", "InstanceLayout"]
@@ -161,6 +159,8 @@ class CompiledProgram:
         Args:
             addresses: print hub addresses (golden test listings leave them out).
         """
+        from .listing import format_listing
+
         return format_listing(self, addresses)
 
 
@@ -254,6 +254,8 @@ def compile_source(text: str, name: str = "main.spin", include_dirs=(),
     Diagnostics name the top file ``name``.  OBJ files are looked for among
     ``files`` (written to a temporary folder), then in ``include_dirs``.
     """
+    import tempfile
+
     with tempfile.TemporaryDirectory(prefix="spinemu-") as tmp:
         for fname, body in (files or {}).items():
             with open(os.path.join(tmp, fname), "w", encoding="utf-8") as fh:

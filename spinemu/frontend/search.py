@@ -20,7 +20,6 @@ and, for one of the Propeller Tool's own library objects
 """
 from __future__ import annotations
 
-import glob
 import os
 import sys
 from dataclasses import dataclass, field
@@ -91,6 +90,8 @@ def _candidate_library_folders(platform: str, environ) -> list:
     if platform.startswith("win"):
         bases = _program_files(environ)
         out = []
+        import glob
+
         for base in bases:     # "Propeller Tool v1.3.2", "Propeller Tool" (2.x): newest name first
             tools = glob.glob(os.path.join(glob.escape(os.path.join(base, "Parallax Inc")), "Propeller Tool*"))
             out += [(os.path.join(t, "Library"), "the Propeller Tool") for t in sorted(tools, reverse=True)]
