@@ -496,15 +496,18 @@ class Counters:
         """Kept for engines that call it before changing pins: counter outputs reach the trace and the
         pin listeners from the counters' history (:mod:`spinemu.chip.countermarks`), so there is nothing to do."""
 
-    def next_edge(self, t: int) -> Optional[int]:
-        """The first counter output change of any running cog after ``t`` on a pin it drives (for WAITPEQ/WAITPNE)."""
+    def next_edge(self, t: int, mask: int = 0xFFFFFFFF) -> Optional[int]:
+        """The first counter output change of any running cog after ``t`` on a pin it drives (for WAITPEQ/WAITPNE).
+
+        ``mask``: only pins in it count (the pins the waiting cogs watch).
+        """
         best = None
         for c in self.chip.cogs:
-            if c.state == "stopped" or not c.dira:
+            if c.state == "stopped" or not c.dira & mask:
                 continue
             for ab, unit in enumerate(self.units[c.id]):
                 seg = self.segment_at(c.id, ab, t + 1)
-                if not seg.output_mask() & c.dira:
+                if not seg.output_mask() & c.dira & mask:
                     continue
                 nxt = None
                 if seg.index + 1 < len(unit.segs):

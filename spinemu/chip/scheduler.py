@@ -197,7 +197,10 @@ class Scheduler:
         t = self._ext_seen
         nxt = self.inputs.next_change(t)
         if self.counters_on:
-            ce = self.counters.next_edge(t)
+            watched = 0                 # a counter edge on a pin no waiter watches wakes nobody
+            for c in self._pin_waiters:
+                watched |= c.pin_wait[0]
+            ce = self.counters.next_edge(t, watched)
             if ce is not None and (nxt is None or ce < nxt):
                 nxt = ce
         return nxt if nxt is not None and nxt < limit else None

@@ -271,3 +271,53 @@ def test_reads_pins_says_which_counter_modes_make_a_phs_read_depend_on_the_pins(
         chip.counters.write(cog, 1, m << 26, 100 + m)       # CTRB
         got[m] = chip.counters.reads_pins(cog)
     assert got == expect
+
+
+def test_a_counter_on_a_pin_no_waiter_watches_wakes_nobody(monkeypatch):
+    """A PASM WAITPEQ on P0 while its own NCO toggles P7 at 1 MHz: the waiter is checked at
+    the changes of P0, not at each of the NCO's 20,000 edges (a library CAN driver ran 12x
+    slower that way), and wakes at the same cycle."""
+    from spinemu.compiler import compile_source
+    source = """CON
+  _clkmode = xtal1 + pll16x
+  _xinfreq = 5_000_000
+VAR
+  long woke
+PUB main
+  cognew(@waiter, @woke)
+  waitcnt(cnt + 800_000)
+  dira[0] := 1
+  outa[0] := 1
+  repeat while woke == 0
+DAT
+        org 0
+waiter  mov ctra, nco                             ' NCO on P7: 1 MHz at 80 MHz
+        mov frqa, freq
+        mov dira, pin7
+        waitpeq pin0, pin0                        ' P0, which the Spin cog sets
+        mov t, cnt
+        wrlong t, par
+        cogid t
+        cogstop t
+nco     long %00100 << 26 | 7
+freq    long $8000_0000 / 40
+pin0    long 1
+pin7    long 1 << 7
+t       res 1
+"""
+    image = compile_source(source).binary
+    checks = []
+    wake = Chip._wake_pin_waiters
+
+    def counted(chip, t, *a, **kw):
+        checks.append(t)
+        return wake(chip, t, *a, **kw)
+
+    monkeypatch.setattr(Chip, "_wake_pin_waiters", counted)
+    chip = Chip(image, compat="chip")
+    result = chip.run(max_cycles=1_200_000)
+    assert len(checks) < 50, f"{len(checks)} wake-up checks"
+    vbase = struct.unpack_from("<H", image, 8)[0]
+    woke = struct.unpack_from("<I", result.hub, vbase)[0]
+    assert 800_000 < woke < 900_000
+    assert result.trace.edge_counts().get(7, 0) > 15_000
