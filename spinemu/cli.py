@@ -46,7 +46,7 @@ examples:
   spinemu trace steps demo.log --pins 1..4               stepper decoder (coils)
   spinemu trace steps accel.log --step-dir 0,1 --plot m.png   step/dir driver, motion plot
   spinemu trace decode uart run.log --pin 30 --baud 9600  serial text on a pin
-  spinemu run spin_src/stepper_demo.spin --bench spin_src/stepper_demo.bench.toml
+  spinemu run spin_src/stepper_demo.spin --bench spin_src/stepper_board.toml
                                                          parts on the pins: the motor's steps per run
   spinemu trace decode i2c run.log --pins 28,29          I2C transfers (addresses, data, ACK/NAK)
   spinemu disasm demo.binary                             listing of an image

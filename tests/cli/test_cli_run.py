@@ -234,3 +234,13 @@ def test_run_summary_lists_pll_outputs_and_warns_about_the_untraced_ones():
     assert "P5, P6: 625 kHz (cog 0 CTRA, PLL differential)" in out
     assert "P4: 80 MHz (cog 0 CTRB, PLL single-ended, not in the trace)" in out
     assert "warning:" in err and "80.000000 MHz" in err
+
+
+def test_every_file_the_help_examples_name_exists():
+    from spinemu.cli import EPILOG
+
+    named = [word for line in EPILOG.splitlines() if line.lstrip().startswith("spinemu ")
+             for word in line.split() if word.startswith("spin_src/")]
+    assert named, "the examples name programs from spin_src"
+    missing = [p for p in named if not (ROOT / p).exists()]
+    assert not missing, f"--help names files that do not exist: {missing}"
