@@ -330,6 +330,14 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         self._stop_ahead(c)
         if c in self._pin_waiters:
             self._pin_waiters.remove(c)
+        h = c.pin_hist
+        if h and h[-1][0] > t:                  # stopped inside a bytecode, before the write it made
+            for when, dira, outa, _ in reversed(h):
+                if when <= t:
+                    break
+            else:
+                dira = outa = 0
+            c.dira, c.outa = dira, outa         # (the record drops the write: pinfold, pinhistory)
         c.state = STOPPED
         self._cogs_changed = True
         c.pin_wait = None
@@ -339,6 +347,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         self.cog_events.append((t, c.id, "stop", why))
         self._seq += 1
         self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, False))
+        self._pin_history(c, t, False)
         if self._pin_waiters and c.dira:        # the pins it drove float: cogs waiting on them may wake
             seen = t if seen is None else seen
             self._wake_pin_waiters(seen + 4, c if by is None else by, seen)

@@ -53,6 +53,8 @@ class Cog:
         "wlo", "whi", "cp", "holes", "pfail", "pfail_n",
         # runtime checks: where the stack array cognew gave the cog ends (else the end of hub RAM)
         "stack_end", "stack_info",
+        # its last changes of DIRA/OUTA: (cycle other cogs see it from, dira, outa, running), oldest first
+        "pin_hist",
     )
 
     def __init__(self, cog_id: int):
@@ -76,6 +78,7 @@ class Cog:
         self.pfail_n = 0
         self.stack_end = 0x8000
         self.stack_info = None
+        self.pin_hist = []
         self.reset_registers()
 
     def reset_registers(self) -> None:

@@ -50,6 +50,7 @@ class PinFold:
         self._drives: dict = {}     # running cog: (dira, outa | counter outputs, outa)
         self._ctr = [[0, 0] for _ in range(8)]     # what each cog's counters A and B drive high
         self._pins = (0, 0)
+        self._stops = [-1] * 8      # per cog: record number (seq) of its last stop folded
 
     def advance(self, upto: int) -> int:
         """Fold the pin events and counter marks before cycle ``upto``.
@@ -79,7 +80,7 @@ class PinFold:
         self.folded_to = upto
         if not n and not marks:
             return first
-        drives, ctr, changes = self._drives, self._ctr, self.changes
+        drives, ctr, changes, stops = self._drives, self._ctr, self.changes, self._stops
         d, o = self._pins
         i = j = 0
         m = len(marks)
@@ -94,8 +95,12 @@ class PinFold:
                 dira, _, outa = drives[cog]
                 drives[cog] = (dira, outa | c[0] | c[1], outa)
             else:
-                t, _, cog, dira, outa, running = pending[i]
+                t, seq, cog, dira, outa, running = pending[i]
                 i += 1
+                if running and seq < stops[cog]:
+                    continue                # written before, timed after, the cog's stop: never happened
+                if not running:
+                    stops[cog] = seq
                 if running:
                     c = ctr[cog]
                     drives[cog] = (dira, outa | c[0] | c[1], outa)

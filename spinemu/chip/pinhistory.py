@@ -72,6 +72,8 @@ class PinHistory:
                 ss.append((dira, outa, running))
             else:
                 i = bisect_right(ts, t)
+                if not running:         # a stop inside a bytecode: the write it made after it never happened
+                    del ts[i:], ss[i:]
                 ts.insert(i, t)
                 ss.insert(i, (dira, outa, running))
         self._seen = n

@@ -29,16 +29,38 @@ class Pins:
     """Pin state, INA, WAITPEQ/WAITPNE and the pin record of a chip (mixin)."""
 
     def pin_state(self, t: int) -> tuple[int, int]:
-        """``(dir, out)`` over running cogs at cycle ``t`` (counter outputs included)."""
+        """``(dir, out)`` over running cogs at cycle ``t`` (counter outputs included).
+
+        A cog's DIRA/OUTA write shows to other cogs from the recorded change's
+        cycle (a Spin bytecode's) or 4 cycles before it (a PASM instruction's);
+        see :meth:`~spinemu.chip.registers.Registers.write`.  A Spin bytecode
+        that writes a register runs, in the scheduler's order, at its access
+        (where it reads), some cycles before its write: a cog reading INA in
+        between sees the pins as they were (:attr:`Cog.pin_hist`), as on the
+        reference interpreter.
+        """
         d = o = 0
         counters = self.counters if self.counters_on else None
         for c in self.cogs:
-            if c.state != STOPPED:
-                d |= c.dira
-                out = c.outa
-                if counters is not None:
-                    out |= counters.outputs(c, t)
-                o |= c.dira & out
+            h = c.pin_hist
+            if h and h[-1][0] > t:
+                dira = outa = 0
+                on = False
+                for when, dd, oo, run in reversed(h):
+                    if when <= t:
+                        dira, outa, on = dd, oo, run
+                        break
+                if not on:
+                    continue
+            elif c.state != STOPPED:
+                dira, outa = c.dira, c.outa
+            else:
+                continue
+            d |= dira
+            out = outa
+            if counters is not None:
+                out |= counters.outputs(c, t)
+            o |= dira & out
         return d, o
 
     def ina(self, t: int) -> int:
@@ -46,17 +68,25 @@ class Pins:
         d, o = self.pin_state(t)
         return o | (self.inputs.levels(t) & ~d & 0xFFFFFFFF)
 
+    def _pin_history(self, c: Cog, when: int, running: bool) -> None:
+        h = c.pin_hist
+        h.append((when, c.dira, c.outa, running))
+        if len(h) > 8:
+            del h[:4]
+
     def record_cog_pins(self, c: Cog, t: int) -> None:
         """Add cog ``c``'s DIRA and OUTA at cycle ``t`` to the pin record (counter outputs are added from
         the counters' own history when the trace is built)."""
         self._seq += 1
         self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, c.state != STOPPED))
+        self._pin_history(c, t, c.state != STOPPED)
 
-    def note_pins(self, c: Cog, t: int, seen=None) -> None:
-        """Cog ``c`` changed DIRA or OUTA at cycle ``t`` (the pins change then; ``seen``: see
+    def note_pins(self, c: Cog, t: int, seen=None, spin: bool = False) -> None:
+        """Cog ``c`` changed DIRA or OUTA at cycle ``t`` (the pins change then; ``seen``, ``spin``: see
         :meth:`~spinemu.chip.registers.Registers.write`)."""
         self._seq += 1
         self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, c.state != STOPPED))
+        self._pin_history(c, t if spin else t - 4, c.state != STOPPED)
         if self._pin_waiters:
             self._wake_pin_waiters(t, c, seen)
             if self.counters.feedback_on:       # a feedback output follows its input one clock later

@@ -52,12 +52,16 @@ class Registers:
             return (c.dcall, c.pbase | (c.pbase_hi << 16), c.vbase, c.dbase, 0, c.sp)[k - 0xA] & _M
         return c.scratch[k]
 
-    def write(self, c, r: int, v: int, t: int, seen=None) -> None:
+    def write(self, c, r: int, v: int, t: int, seen=None, spin: bool = False) -> None:
         """Cog ``c`` writes ``v`` to register ``r`` with an instruction at cycle ``t`` (pins change at ``t``).
 
-        ``seen``: the cycle from which other cogs' reads of the pins see the
-        change (the writing bytecode's access, which the scheduler orders
-        the cogs by); default ``t - 4`` (a PASM instruction's).
+        ``seen``: the writing bytecode's access, which the scheduler orders
+        the cogs by (a parked PASM loop waiting on the pins wakes by it);
+        default ``t - 4`` (a PASM instruction's).  ``spin``: the Spin
+        interpreter writes (a bytecode, or the Python engine's statement):
+        other cogs' INA reads see a pin change from ``t``, a PASM
+        instruction's from ``t - 4`` (both measured on spinsim 0.99,
+        tests/data/chip/programs/pins_*.spin).
         """
         v &= _M
         if r >= 0x1F0:
@@ -65,11 +69,11 @@ class Registers:
             if k == 4:
                 if v != c.outa:
                     c.outa = v
-                    self.chip.note_pins(c, t, seen)
+                    self.chip.note_pins(c, t, seen, spin)
             elif k == 6:
                 if v != c.dira:
                     c.dira = v
-                    self.chip.note_pins(c, t, seen)
+                    self.chip.note_pins(c, t, seen, spin)
             elif k == 5:
                 c.outb = v
             elif k == 7:

@@ -517,7 +517,7 @@ def build_handlers(chip, timing: Timing):
     def op_pop_spr(c, op, t):
         tf = fetched(c, t)
         r = 0x1F0 + (pop(c) & 0xF)
-        reg_write(c, r, pop(c), tf + T.spr_pop - 4, tf + ACC[op])     # registers change in the last instruction
+        reg_write(c, r, pop(c), tf + T.spr_pop - 4, tf + ACC[op], True)     # registers change in the last instruction
         return T.spr_pop
 
     def op_using_spr(c, op, t):
@@ -527,7 +527,7 @@ def build_handlers(chip, timing: Timing):
         c.pc += 1
         v = reg_read(c, r, tf + T.spr_read_at)
         new, rest = _assign(c, a, v, MASK32, True)
-        reg_write(c, r, new, tf + T.spr_using + rest - 4, tf + ACC[op])
+        reg_write(c, r, new, tf + T.spr_using + rest - 4, tf + ACC[op], True)
         return T.spr_using + rest
 
     def op_waitvid(c, op, t):
@@ -646,7 +646,7 @@ def build_handlers(chip, timing: Timing):
             if width < 32:
                 old = reg_read(c, r, tf + T.reg_read_at[key])
                 v = (old & ~(field << lo)) | (v << lo)
-            reg_write(c, r, v, tf + T.reg[key] - 4, tf + ACC[op])
+            reg_write(c, r, v, tf + T.reg[key] - 4, tf + ACC[op], True)
             return T.reg[key]
         if access == 2:
             a = mem[c.pc]
@@ -659,7 +659,7 @@ def build_handlers(chip, timing: Timing):
             new &= field
             if rev:
                 new = _reverse_bits(new, width)
-            reg_write(c, r, (old & ~(field << lo)) | (new << lo), tf + T.reg[key] + rest - 4, tf + ACC[op])
+            reg_write(c, r, (old & ~(field << lo)) | (new << lo), tf + T.reg[key] + rest - 4, tf + ACC[op], True)
             return T.reg[key] + rest
         raise chip.fault(c, c.pc - 2, f"register access ${b:02X} is not a Spin operation")
 

@@ -61,7 +61,7 @@ def _write(reg: int, value: int) -> None:
     # the statement already paid for the writing bytecode: its last instruction writes
     c = RT.cog
     chip = RT.chip
-    chip.registers.write(c, reg, value & M32, c.t - 4)
+    chip.registers.write(c, reg, value & M32, c.t - 4, spin=True)
     if chip._preempt:                   # the write woke a WAITPEQ/WAITPNE cog: let the scheduler see it
         chip._end_preemption()
         RT.limit = -1
