@@ -8,16 +8,33 @@ binary, the listing and the line table (:class:`Span`).
 
 Sizing follows what OpenSpin 1.00.81 does (observed with probe programs):
 
-* every forward reference is first assumed long (a 2-byte jump offset, a
-  2-byte ``PUSH_IMM2`` address);
-* then the method is laid out again and again; a forward jump is short
-  (1 byte, -64..63) when the distance measured to the target's address *of
-  the previous pass* fits, an address push is ``PUSH_IMM1`` when that address
-  is below 256; a backward jump is sized from its exact distance;
-* this stops when a pass changes no size.  Sizes only ever shrink, so a
-  forward jump that needs exactly 63 stays long -- except a ``next`` in
-  ``repeat ... while/until``, measured from the end of its long form, which
-  becomes short (see :class:`Label`).
+* each block statement (``if``, ``case``, ``repeat``) and ``lookup``/``lookdown``
+  expression is compiled again and again until two compiles in a row give it
+  the same size; each compile of a block compiles the blocks inside it afresh
+  (the method body is one such block);
+* a forward reference to a label of the block is sized with the label's
+  address from the block's previous compile: a jump is short (1 byte,
+  -64..63) when that address is in reach of its short form, an address push
+  is ``PUSH_IMM1`` when that address is below 256; in the block's first
+  compile the label is unknown and the reference is long (2-byte offset,
+  ``PUSH_IMM2``); a backward jump is sized from its exact distance;
+* a ``next``/``quit`` refers to a label of its loop, an enclosing block: it
+  sees the address from the loop's previous compile (long in the loop's first
+  compile) while the blocks around it, compiled afresh, start with their own
+  jumps long.  So a ``next``/``quit`` that lands exactly 63 bytes past its
+  long form can be short in a block's first compile (the jumps before it
+  still long) and long in the next one (they shrank): when one byte of the
+  block's own jumps shrinks in that compile, the block's size is unchanged
+  and that compile is the last one -- its forward jumps keep the addresses of
+  the compile before, so a jump to the start of the branch holding the
+  ``next``/``quit`` points one byte past it (OpenSpin writes these offsets;
+  spinemu writes the same bytes);
+* the ``next`` of a loop with its test at the end (``repeat ... while``)
+  refers, until the test is reached in the loop's first compile, to the top of
+  the loop (OpenSpin sets it when it meets the ``while``/``until``), so there
+  a ``next`` near the top is short in the first compile;
+* the offset (or address) written is the one the reference was sized with,
+  from the last compile of its block;
 * string addresses always use the 2-byte offset form (``87 80 xx``);
 * the string pool is in source order (an ``other`` case block is compiled
   before the other blocks but its strings keep their place);
@@ -43,16 +60,16 @@ __all__ = ["Label", "CodeBuffer", "Span"]
 class Label:
     """A place in a method's code (bound by :meth:`CodeBuffer.mark`).
 
-    ``late``: forward jumps to it are sized from the end of their long form
-    (OpenSpin does this for ``next`` in ``repeat ... while/until``: a jump of
-    exactly 63 bytes there is short, elsewhere long).
+    ``start_as``: another label whose address references to this one use until
+    this one is reached in a compile of its block (a loop with its test at the
+    end: its ``next`` is the top of the loop until the test is reached).
     """
 
-    __slots__ = ("name", "late")
+    __slots__ = ("name", "start_as")
 
-    def __init__(self, name: str = "", late: bool = False):
+    def __init__(self, name: str = "", start_as: Optional["Label"] = None):
         self.name = name
-        self.late = late
+        self.start_as = start_as
 
     def __repr__(self) -> str:  # pragma: no cover - debugging aid
         return f"Label({self.name!r})"
@@ -69,7 +86,24 @@ class Span:
 
 
 # item kinds
-_BYTES, _JUMP, _ADDR, _STR, _MARK = range(5)
+_BYTES, _JUMP, _ADDR, _STR, _MARK, _BEGIN, _END = range(7)
+
+#: a block that has not settled after this many compiles keeps its last one
+_MAX_COMPILES = 64
+
+
+class _Block:
+    """A block of a method's items (``items[lo:hi]``, between its markers) and what its compiles gave."""
+
+    __slots__ = ("lo", "hi", "parts", "own", "outer", "cache")
+
+    def __init__(self, lo: int):
+        self.lo = lo
+        self.hi = lo
+        self.parts: list = []       # item indexes and inner blocks, in order
+        self.own: list = []         # labels marked in the block itself
+        self.outer: tuple = ()      # labels of enclosing blocks referred to inside
+        self.cache: dict = {}       # (start, outer addresses) -> what the compile gave
 
 
 class CodeBuffer:
@@ -136,7 +170,54 @@ class CodeBuffer:
     def mark(self, label: Label) -> None:
         self.items.append([_MARK, b"", self.pos, "", label])
 
+    @contextmanager
+    def block(self):
+        """The items emitted inside form a block (a statement or expression OpenSpin compiles until it settles)."""
+        self.items.append([_BEGIN, b"", self.pos, ""])
+        try:
+            yield
+        finally:
+            self.items.append([_END, b"", self.pos, ""])
+
     # -- sizing
+    def _blocks(self) -> _Block:
+        """The method body as a block, with the blocks inside it."""
+        items = self.items
+        root = _Block(0)
+        stack = [root]
+        owner: dict = {}
+        refs: list = []             # (blocks around it, label) of every reference
+        for i, item in enumerate(items):
+            kind = item[0]
+            if kind == _BEGIN:
+                blk = _Block(i + 1)
+                stack[-1].parts.append(blk)
+                stack.append(blk)
+                continue
+            if kind == _END:
+                blk = stack.pop()
+                blk.hi = i
+                continue
+            stack[-1].parts.append(i)
+            if kind == _MARK:
+                stack[-1].own.append(item[4])
+                owner[item[4]] = stack[-1]
+            elif kind == _JUMP or kind == _ADDR:
+                refs.append((tuple(stack), item[4]))
+        root.hi = len(items)
+        outer: dict = {}
+        for path, label in refs:
+            home = owner.get(label)
+            for blk in reversed(path):
+                if blk is home:
+                    break
+                outer.setdefault(id(blk), (blk, {}))[1][label] = None
+                if label.start_as is not None:
+                    outer[id(blk)][1][label.start_as] = None
+        for blk, labels in outer.values():
+            blk.outer = tuple(labels)
+        return root
+
     def layout(self, start: int) -> tuple[list, int]:
         """Size every item for code starting at object offset ``start``.
 
@@ -148,45 +229,64 @@ class CodeBuffer:
             ValueError: a jump does not fit in 15 bits.
         """
         items = self.items
-        prev: Optional[dict] = None
-        while True:
-            addr = start
-            here: dict = {}
-            changed = False
-            for item in items:
+        at: dict = {}               # label -> its address in the latest compile that reached it
+        used: list = [None] * len(items)    # per reference: the address it was sized with
+
+        def compile_block(blk: _Block, begin: int) -> int:
+            key = (begin,) + tuple(at.get(label) for label in blk.outer)
+            known = blk.cache.get(key)
+            if known is not None:
+                end, sizes, addrs, marks = known
+                for i, size, addr in zip(range(blk.lo, blk.hi), sizes, addrs):
+                    if size is not None:
+                        items[i][5] = size
+                        used[i] = addr
+                at.update(marks)
+                return end
+            for label in blk.own:
+                at.pop(label, None)
+            size = None
+            for _ in range(_MAX_COMPILES):
+                end = compile_parts(blk.parts, begin)
+                if end - begin == size:
+                    break
+                size = end - begin
+            span = range(blk.lo, blk.hi)
+            blk.cache[key] = (end, [items[i][5] if items[i][0] in (_JUMP, _ADDR) else None for i in span],
+                              [used[i] for i in span],
+                              {items[i][4]: at[items[i][4]] for i in span if items[i][0] == _MARK})
+            return end
+
+        def compile_parts(parts: list, addr: int) -> int:
+            for part in parts:
+                if type(part) is _Block:
+                    addr = compile_block(part, addr)
+                    continue
+                item = items[part]
                 kind = item[0]
                 if kind == _BYTES:
                     addr += len(item[1])
                 elif kind == _MARK:
-                    here[item[4]] = addr
+                    at[item[4]] = addr
                 elif kind == _STR:
                     addr += 3
-                elif kind == _JUMP:
-                    target = item[4]
-                    end_short = addr + len(item[1]) + 1
-                    if target in here:
-                        size = 1 if here[target] - end_short >= -64 else 2
-                    elif prev is None:
-                        size = 2
+                else:
+                    label = item[4]
+                    target = at.get(label)
+                    if target is None and label.start_as is not None:
+                        target = at.get(label.start_as)
+                    used[part] = target
+                    if kind == _JUMP:
+                        reach = target - (addr + len(item[1]) + 1) if target is not None else None
+                        item[5] = 1 if reach is not None and -64 <= reach <= 63 else 2
+                        addr += len(item[1]) + item[5]
                     else:
-                        size = 1 if -64 <= prev[target] - end_short - target.late <= 63 else 2
-                    if size != item[5]:
-                        changed = True
-                        item[5] = size
-                    addr += len(item[1]) + size
-                else:  # _ADDR
-                    if prev is None:
-                        size = 2
-                    else:
-                        size = 1 if prev[item[4]] < 0x100 else 2
-                    if size != item[5]:
-                        changed = True
-                        item[5] = size
-                    addr += 1 + size
-            if prev is not None and not changed:
-                break
-            prev = here
-        return self._spans(start, here, addr)
+                        item[5] = 1 if target is not None and target < 0x100 else 2
+                        addr += 1 + item[5]
+            return addr
+
+        end = compile_block(self._blocks(), start)
+        return self._spans(start, used, end)
 
     def label_offsets(self, start: int) -> dict:
         """``{label: object offset}`` of every marked label, for code laid out at ``start``."""
@@ -200,7 +300,7 @@ class CodeBuffer:
                 addr += len(item[1])
             elif kind == _STR:
                 addr += 3
-            else:                           # a jump or an address push, as layout sized it
+            elif kind == _JUMP or kind == _ADDR:    # as layout sized it
                 addr += len(item[1]) + item[5] if kind == _JUMP else 1 + item[5]
         return at
 
@@ -228,23 +328,23 @@ class CodeBuffer:
             prev = path
         return offsets, kept
 
-    def _spans(self, start: int, labels: dict, code_end: int) -> tuple[list, int]:
+    def _spans(self, start: int, used: list, code_end: int) -> tuple[list, int]:
         spans = []
         addr = start
         order = sorted(range(len(self.strings)), key=lambda i: self._string_index[i])
         pool_offset, kept = self._pool(order, code_end)
-        for item in self.items:
+        for i, item in enumerate(self.items):
             kind = item[0]
-            if kind == _MARK:
+            if kind == _MARK or kind == _BEGIN or kind == _END:
                 continue
             if kind == _BYTES:
                 data = item[1]
             elif kind == _JUMP:
                 size = item[5]
-                offset = labels[item[4]] - (addr + len(item[1]) + size)
+                offset = used[i] - (addr + len(item[1]) + size)
                 data = item[1] + encode_signed(offset, force_long=(size == 2))
             elif kind == _ADDR:
-                value = labels[item[4]]
+                value = used[i]
                 data = bytes((0x38, value)) if item[5] == 1 else bytes((0x39, value >> 8, value & 0xFF))
             else:  # _STR
                 value = pool_offset[item[4]]

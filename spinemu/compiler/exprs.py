@@ -251,6 +251,10 @@ class ExprCompiler:
         self.call(node.call, want=True, trap=True)
 
     def x_Lookup(self, node) -> None:
+        with self.code.block():     # OpenSpin compiles it until it settles (code.py)
+            self._lookup(node)
+
+    def _lookup(self, node) -> None:
         end = Label("lookup end")
         self.code.emit(0x36 if node.name in ("lookup", "lookdown") else 0x35, node.name)
         self.code.push_address(end)

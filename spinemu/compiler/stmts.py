@@ -33,6 +33,8 @@ __all__ = ["MethodCompiler"]
 
 _OP = {name: op.code for name, op in BY_MNEMONIC.items()}
 _ASSIGNING_UNARY = {"-", "!", "||", "^^", "|<", ">|", "NOT"}
+#: statements OpenSpin compiles as blocks, again until they settle (code.py)
+_BLOCKS = frozenset(("If", "Case", "RepeatForever", "RepeatCount", "RepeatWhile", "RepeatFrom"))
 
 
 class _Loop:
@@ -84,8 +86,13 @@ class MethodCompiler(ExprCompiler):
     def block(self, stmts) -> None:
         for st in stmts:
             self.code.pos = st.pos
+            name = type(st).__name__
             try:
-                getattr(self, "s_" + type(st).__name__)(st)
+                if name in _BLOCKS:
+                    with self.code.block():
+                        getattr(self, "s_" + name)(st)
+                else:
+                    getattr(self, "s_" + name)(st)
             except CompileFailure:
                 pass
 
@@ -281,7 +288,7 @@ class MethodCompiler(ExprCompiler):
             code.pos = node.pos
             self.jmp(top, "repeat")
         else:
-            nxt.late = True         # OpenSpin sizes jumps to it one byte more generously (code.py)
+            nxt.start_as = top      # until OpenSpin meets the test, next goes to the top (code.py)
             code.mark(top)
             self.loop_body(node.body, _Loop(nxt, end))
             code.mark(nxt)

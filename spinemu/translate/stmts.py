@@ -896,7 +896,7 @@ class _Compiler(cstmts.MethodCompiler):
             super().x_Lookup(node)
             # its LOOK_DONE (before the end label) belongs to where the lookup is, not to its items: a
             # lookup that is another lazy lookup's value keeps it (a match gives it back)
-            done = code.items[-2]
+            done = next(item for item in reversed(code.items) if item[1])
             if done[1] == b"\x0f":
                 done[2] = pos
         finally:
