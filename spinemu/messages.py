@@ -155,6 +155,9 @@ RES_AFTER_DATA = "res cannot be followed by data or instructions in the same org
 # ----------------------------------------------------------------------------- hints (change no byte)
 HINT_ASSIGNING_COMPARE = ("'{op}' assigns in Spin: '{target} {op} ...' sets {target} to ({target} {cmp} ...) and gives "
                           "that; to compare '{what}' write '{right}'")
+HINT_STALE_JUMP = ("OpenSpin's jump sizing writes this {what} {off} byte{s} {where} (the image is OpenSpin's, "
+                   "byte for byte): the compiled program does not do what this line says; moving the code "
+                   "around it by a byte (a 'next' or 'quit' that ends exactly 63 bytes on) avoids it")
 HINT_ROTATE_NOT_MINUS = ("'{left}<-{right}' rotates {left} left by {right} ('<-' is rotate-left); to compare with "
                          "a negative number write '{left} < -{right}'")
 HINT_SHADOWED_OBJECT = ("'{name}' is taken from {used}; {other} is also there and differs (the folder "

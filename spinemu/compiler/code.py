@@ -118,6 +118,8 @@ class CodeBuffer:
         self._paths: list = []
         self._path: list = []
         self._contexts = 0
+        #: after :meth:`layout`: references written with a stale address (see :meth:`_stale`)
+        self.stale: list = []
 
     # -- emitting
     def emit(self, data, note: str = "") -> None:
@@ -286,11 +288,23 @@ class CodeBuffer:
             return addr
 
         end = compile_block(self._blocks(), start)
+        self.stale = self._stale(start, used)
         return self._spans(start, used, end)
+
+    def _stale(self, start: int, used: list) -> list:
+        """``(pos, note, bytes off)`` of every jump or address push written with an address its label no
+        longer has (see "stale" in the module docstring): the image, like OpenSpin's, goes elsewhere."""
+        actual = self.label_addresses(start)
+        return [(item[2], item[3], used[i] - actual[item[4]]) for i, item in enumerate(self.items)
+                if (item[0] == _JUMP or item[0] == _ADDR) and used[i] != actual.get(item[4], used[i])]
 
     def label_offsets(self, start: int) -> dict:
         """``{label: object offset}`` of every marked label, for code laid out at ``start``."""
         self.layout(start)
+        return self.label_addresses(start)
+
+    def label_addresses(self, start: int) -> dict:
+        """``{label: object offset}`` with the sizes the last :meth:`layout` gave."""
         at, addr = {}, start
         for item in self.items:
             kind = item[0]

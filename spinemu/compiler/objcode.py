@@ -99,6 +99,18 @@ class ObjectCompiler:
         pos = node.pos
         self.errors.append(Diagnostic(message, pos.path, pos.line, pos.col, self.source.line(pos.line)))
 
+    def _stale_hints(self, stale: list) -> None:
+        """A hint for each jump or address OpenSpin's sizing writes with a stale address (code.py)."""
+        for pos, note, off in stale:
+            if pos is None:
+                continue
+            what = "address" if note.startswith("end") or "address" in note else "jump"
+            where = "past its target" if off > 0 else "before its target"
+            text = self.source.line(pos.line) or ""
+            self.unit.hints.append(Diagnostic(msg.HINT_STALE_JUMP.format(
+                what=what, off=abs(off), s="" if abs(off) == 1 else "s", where=where),
+                pos.path, pos.line, pos.col, text, "warning"))
+
     def error_at(self, message: str, pos) -> None:
         self.errors.append(Diagnostic(message, pos.path, pos.line, pos.col, self.source.line(pos.line)))
 
@@ -212,6 +224,7 @@ class ObjectCompiler:
                 except ValueError:
                     self.error(msg.JUMP_TOO_FAR, sym.node)
                     mspans, end = [], offset
+                self._stale_hints(buf.stale)
             infos.append(MethodInfo(sym.name, sym.index, sym.public, offset, end, mc.locals_size,
                                     sym.nparams, sym.node.pos, _frame_slots(sym.node, mc.frame)))
             for s in mspans:

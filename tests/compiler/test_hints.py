@@ -81,3 +81,14 @@ def test_compile_and_run_print_the_hints_on_stderr():
         out, err = io.StringIO(), io.StringIO()
         assert main(argv, out, err) == 0
         assert "hints.spin:6:8: warning: '>=' assigns in Spin" in err.getvalue() and "^~" in err.getvalue()
+
+
+def test_a_jump_openspins_sizing_writes_past_its_target_is_hinted_at_its_line():
+    regressions = ROOT / "tests" / "data" / "compiler" / "regressions"
+    prog = compile_file(str(regressions / "stale_branch_jumps.spin"))
+    stale = [d for d in prog.warnings if d.message.startswith("OpenSpin's jump sizing")]
+    assert stale, "the regression program has jumps OpenSpin writes one byte past their targets"
+    assert all("1 byte past its target" in d.message and d.line for d in stale)
+    # a program whose jumps all land where they should gets no such hint
+    far = compile_file(str(regressions / "next_in_post_loop_far.spin"))
+    assert not [d for d in far.warnings if d.message.startswith("OpenSpin's jump sizing")]
