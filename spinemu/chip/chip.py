@@ -332,12 +332,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
             self._pin_waiters.remove(c)
         h = c.pin_hist
         if h and h[-1][0] > t:                  # stopped inside a bytecode, before the write it made
-            for when, dira, outa, _ in reversed(h):
-                if when <= t:
-                    break
-            else:
-                dira = outa = 0
-            c.dira, c.outa = dira, outa         # (the record drops the write: pinfold, pinhistory)
+            c.dira, c.outa, _ = self._pins_before(c, t)     # (the record drops the write: pinfold, pinhistory)
         c.state = STOPPED
         self._cogs_changed = True
         c.pin_wait = None

@@ -44,12 +44,7 @@ class Pins:
         for c in self.cogs:
             h = c.pin_hist
             if h and h[-1][0] > t:
-                dira = outa = 0
-                on = False
-                for when, dd, oo, run in reversed(h):
-                    if when <= t:
-                        dira, outa, on = dd, oo, run
-                        break
+                dira, outa, on = self._pins_before(c, t)
                 if not on:
                     continue
             elif c.state != STOPPED:
@@ -67,6 +62,14 @@ class Pins:
         """What INA reads at cycle ``t``: driven pins as driven, the rest from the input model."""
         d, o = self.pin_state(t)
         return o | (self.inputs.levels(t) & ~d & 0xFFFFFFFF)
+
+    @staticmethod
+    def _pins_before(c: Cog, t: int) -> tuple:
+        """``(dira, outa, running)`` of cog ``c`` as other cogs see them at cycle ``t`` (:attr:`Cog.pin_hist`)."""
+        for when, dira, outa, running in reversed(c.pin_hist):
+            if when <= t:
+                return dira, outa, running
+        return 0, 0, False
 
     def _pin_history(self, c: Cog, when: int, running: bool) -> None:
         h = c.pin_hist

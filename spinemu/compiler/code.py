@@ -292,10 +292,11 @@ class CodeBuffer:
         return self._spans(start, used, end)
 
     def _stale(self, start: int, used: list) -> list:
-        """``(pos, note, bytes off)`` of every jump or address push written with an address its label no
-        longer has (see "stale" in the module docstring): the image, like OpenSpin's, goes elsewhere."""
+        """``(pos, is an address push, bytes off)`` of every jump or address push written with an address
+        its label no longer has (see "stale" in the module docstring): the image, like OpenSpin's, goes
+        elsewhere."""
         actual = self.label_addresses(start)
-        return [(item[2], item[3], used[i] - actual[item[4]]) for i, item in enumerate(self.items)
+        return [(item[2], item[0] == _ADDR, used[i] - actual[item[4]]) for i, item in enumerate(self.items)
                 if (item[0] == _JUMP or item[0] == _ADDR) and used[i] != actual.get(item[4], used[i])]
 
     def label_offsets(self, start: int) -> dict:

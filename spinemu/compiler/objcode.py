@@ -101,10 +101,10 @@ class ObjectCompiler:
 
     def _stale_hints(self, stale: list) -> None:
         """A hint for each jump or address OpenSpin's sizing writes with a stale address (code.py)."""
-        for pos, note, off in stale:
+        for pos, address, off in stale:
             if pos is None:
                 continue
-            what = "address" if note.startswith("end") or "address" in note else "jump"
+            what = "address" if address else "jump"
             where = "past its target" if off > 0 else "before its target"
             text = self.source.line(pos.line) or ""
             self.unit.hints.append(Diagnostic(msg.HINT_STALE_JUMP.format(
