@@ -166,18 +166,50 @@ def _kind(path: str) -> str:
 
 
 class _Out:
-    """stdout/stderr plus rich consoles on them."""
+    """stdout/stderr plus rich consoles on them (made when first used: importing rich
+    costs a plain ``run`` a tenth of its start-up)."""
 
     def __init__(self, stdout: TextIO, stderr: TextIO, quiet: bool = False):
         self.stdout, self.stderr, self.quiet = stdout, stderr, quiet
-        from rich.console import Console
+        self._console = self._err_console = None
 
-        self.console = Console(file=stdout, highlight=False, soft_wrap=False)
-        self.err_console = Console(file=stderr, highlight=False, soft_wrap=True)
+    @property
+    def console(self):
+        if self._console is None:
+            from rich.console import Console
+
+            self._console = Console(file=self.stdout, highlight=False, soft_wrap=False)
+        return self._console
+
+    @property
+    def err_console(self):
+        if self._err_console is None:
+            from rich.console import Console
+
+            self._err_console = Console(file=self.stderr, highlight=False, soft_wrap=True)
+        return self._err_console
 
     def print(self, *items) -> None:
         if not self.quiet:
             self.console.print(*items)
+
+    def warn(self, text: str) -> None:
+        """One line (or more) on stderr, as it is (no markup)."""
+        self.stderr.write(text + "\n")
+        self.stderr.flush()
+
+    def rows(self, rows) -> None:
+        """Label/value rows as two aligned columns (a value's further lines are indented)."""
+        if self.quiet:
+            return
+        width = max((len(k) for k, _ in rows), default=0) + 2
+        lines = []
+        for k, v in rows:
+            first, *rest = str(v).split("\n")
+            lines.append(f"{k:<{width}}{first}".rstrip())
+            lines += [(" " * width + more).rstrip() for more in rest]
+        self.stdout.write("\n".join(lines) + "\n")
+        self.stdout.flush()
 
 
 # ----------------------------------------------------------------------------- compile
@@ -266,24 +298,18 @@ def _run_limit(args, clock_hz: int) -> Optional[int]:
     return None
 
 
-def _summary_table(trace, end_cycle: int, extra_rows):
-    from rich.table import Table
-
+def _summary_rows(trace, end_cycle: int, extra_rows) -> list:
     from .analysis.view import format_time
 
-    table = Table(show_header=False, box=None, pad_edge=False)
-    table.add_column(style="bold")
-    table.add_column()
-    table.add_row("simulated", f"{format_time(end_cycle, trace.clock_hz)} ({end_cycle:,} cycles at {trace.clock_hz:,} Hz)")
-    for k, v in extra_rows:
-        table.add_row(k, v)
+    rows = [("simulated", f"{format_time(end_cycle, trace.clock_hz)} ({end_cycle:,} cycles at {trace.clock_hz:,} Hz)")]
+    rows += extra_rows
     edges = trace.edge_counts()
     driven = trace.driven_pins()
     if driven:
-        table.add_row("pins", ", ".join(f"P{p}: {edges.get(p, 0)} edges" for p in driven))
+        rows.append(("pins", ", ".join(f"P{p}: {edges.get(p, 0)} edges" for p in driven)))
     else:
-        table.add_row("pins", "no pin was ever driven")
-    return table
+        rows.append(("pins", "no pin was ever driven"))
+    return rows
 
 
 def _write_trace(args, trace) -> None:
@@ -351,7 +377,7 @@ def cmd_run(args, out: _Out) -> int:
     if args.dump_hub:
         _write_atomic(args.dump_hub, bytes(result.hub), True)
     for w in result.warnings + (session.warnings(result.end_cycle) if session else []) + bench.warnings():
-        out.err_console.print(f"warning: {w}", markup=False)
+        out.warn(f"warning: {w}")
     if not out.quiet:
         started = sum(1 for e in result.cog_events if e[2] == "start")
         stopped = sum(1 for e in result.cog_events if e[2] == "stop")
@@ -373,7 +399,7 @@ def cmd_run(args, out: _Out) -> int:
         if result.stats.get("pll"):
             rows.append(("PLL", _pll_summary(result.stats["pll"])))
         rows.extend(_runtime_warning_rows(getattr(result, "runtime_warnings", [])))
-        out.print(_summary_table(result.trace, result.end_cycle, rows))
+        out.rows(_summary_rows(result.trace, result.end_cycle, rows))
     if args.engine != "python" and args.profile:
         out.console.print(profiler.finish(args.target).table())
     return 0
@@ -482,9 +508,9 @@ def _run_pbasic(args, out: _Out) -> int:
             out.stdout.write("\n")
     _write_trace(args, bench.trace(result.trace))
     for w in result.warnings:
-        out.err_console.print(w.render() if hasattr(w, "render") else f"warning: {w}", markup=False)
+        out.warn(w.render() if hasattr(w, "render") else f"warning: {w}")
     for w in (session.warnings(result.end_cycle) if session else []) + bench.warnings():
-        out.err_console.print(f"warning: {w}", markup=False)
+        out.warn(f"warning: {w}")
     if not out.quiet:
         trace = result.trace
         end = trace.end_cycle
@@ -496,7 +522,7 @@ def _run_pbasic(args, out: _Out) -> int:
         if session:
             rows.append(session.summary())
         rows += bench.rows()
-        out.print(_summary_table(trace, end, rows))
+        out.rows(_summary_rows(trace, end, rows))
     return 0
 
 

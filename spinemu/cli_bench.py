@@ -296,9 +296,9 @@ def _print_frames(out, frames, clock_hz: int) -> None:
 def _violations(out, violations, clock_hz: int) -> None:
     from .analysis.view import format_time
     for cycle, message in violations[:_WARNINGS_SHOWN]:
-        out.err_console.print(f"warning: {message} (at cycle {cycle}, {format_time(cycle, clock_hz)})", markup=False)
+        out.warn(f"warning: {message} (at cycle {cycle}, {format_time(cycle, clock_hz)})")
     if len(violations) > _WARNINGS_SHOWN:
-        out.err_console.print(f"warning: {len(violations) - _WARNINGS_SHOWN} more protocol violations", markup=False)
+        out.warn(f"warning: {len(violations) - _WARNINGS_SHOWN} more protocol violations")
 
 
 def _decode_i2c(args, trace, pins, out) -> list:

@@ -87,7 +87,7 @@ def _print_hints(out, prog) -> None:
     """The compiler's hints (spinemu.compiler.hints) on stderr, file:line:col with a caret."""
     cli = _cli()
     for d in (prog.warnings if prog is not None else ()):
-        out.err_console.print(cli._render_error_diagnostic(d), markup=False, highlight=False)
+        out.warn(cli._render_error_diagnostic(d))
 
 
 # ----------------------------------------------------------------------------- runtime warnings
@@ -99,7 +99,7 @@ def _runtime_warning_log(args, out, prog):
     from .runtime_warnings import WarningLog
 
     def show(w):
-        out.err_console.print(cli._render_error_diagnostic(w.diagnostic()), markup=False, highlight=False)
+        out.warn(cli._render_error_diagnostic(w.diagnostic()))
 
     if prog is not None:
         info = prog.debug_info()
