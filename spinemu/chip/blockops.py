@@ -44,6 +44,23 @@ _BINARY_EXPR = {
     0x1D: "0xFFFFFFFF if {x} ^ 0x80000000 <= {y} ^ 0x80000000 else 0",
     0x1E: "0xFFFFFFFF if {x} ^ 0x80000000 >= {y} ^ 0x80000000 else 0",
 }
+# signed division and modulus, inline for the usual non-negative operands (names or literals)
+_DIVMOD = {0x16: "//", 0x17: "%"}
+
+
+def _binary_expr(f: int, x: str, y: str) -> str:
+    """Python text for binary math operator ``f`` on operands ``x``, ``y`` (names or literals)."""
+    if f in _BINARY_EXPR:
+        return _BINARY_EXPR[f].format(x=x, y=y)
+    o = _DIVMOD.get(f)
+    if o is not None and (x.isidentifier() or x.isdigit()) and (y.isidentifier() or y.isdigit()):
+        if y.isdigit() and 0 < int(y) < 0x80000000:     # the sign of the result follows x's
+            return f"({x} {o} {y} if {x} < 0x80000000 else -((0x100000000 - {x}) {o} {y}) & 0xFFFFFFFF)"
+        if not y.isdigit():
+            return f"({x} {o} {y} if {x} < 0x80000000 and 0 < {y} < 0x80000000 else B{f:02X}({x}, {y}))"
+    return f"B{f:02X}({x}, {y})"
+
+
 _UNARY_EXPR = {
     0x06: "-{x} & 0xFFFFFFFF",
     0x07: "{x} ^ 0xFFFFFFFF",
@@ -87,10 +104,8 @@ class DataOps:
             x = b.pop()
             if _is_literal(x) and _is_literal(y):
                 new = str(BINARY[f](int(x), int(y)))
-            elif f in _BINARY_EXPR:
-                new = _BINARY_EXPR[f].format(x=x, y=y)
             else:
-                new = f"B{f:02X}({x}, {y})"
+                new = _binary_expr(f, x, y)
         b.push(new)
         self._account(b, op, *self._math_rest(f, table, x, y, 0))
 
@@ -275,7 +290,7 @@ class DataOps:
                     b.off += 4
                 return (new,) + self._math_rest(f, table, v, "0", fixed)
             y = b.read(b.off - 4)
-            expr = _BINARY_EXPR[f].format(x=v, y=y) if f in _BINARY_EXPR else f"B{f:02X}({v}, {y})"
+            expr = _binary_expr(f, v, y)
             new = b.write(b.off - 4, expr)
             if not push_it:
                 b.off -= 4

@@ -353,3 +353,48 @@ def test_random_bytes_fail_or_run_the_same_with_compiled_blocks(seed):
         code += _chaos_op(rng)
     image = make_image(bytes(code), var_longs=16, locals_bytes=32, methods=[(bytes([0x36, 0x33]), 0)])
     assert_same(image, 1_000_000, "chip" if seed % 2 else "spinsim")
+
+
+# ---------------------------------------------------------------------- division inline
+DIVMOD_EDGES = [0, 1, 2, 3, 7, 1000, 0x7FFFFFFF, 0x80000000, 0x80000001, 0xFFFFFFFF, 0xFFFFFFFE,
+                0xFFFFFC18, 123_456_789, 0xF0000000]
+
+
+@pytest.mark.parametrize("f", [0x16, 0x17], ids=["div", "mod"])
+def test_inline_division_and_modulus_give_the_interpreters_results(f):
+    from spinemu.chip import mathops
+    from spinemu.chip.blockops import _binary_expr
+
+    fn = mathops.BINARY[f]
+    rng = random.Random(f)
+    values = DIVMOD_EDGES + [rng.getrandbits(32) for _ in range(200)] + [rng.getrandbits(8) for _ in range(50)]
+    env = {f"B{f:02X}": fn}
+    by_name = eval(f"lambda x, y: {_binary_expr(f, 'x', 'y')}", env)
+    for y in values:
+        by_literal = eval(f"lambda x: {_binary_expr(f, 'x', str(y))}", env)
+        for x in values:
+            assert by_name(x, y) == fn(x, y), (hex(x), hex(y))
+            assert by_literal(x) == fn(x, y), (hex(x), hex(y))
+
+
+def test_a_hot_loop_dividing_negative_and_positive_values_runs_the_same_with_compiled_blocks():
+    from spinemu.compiler import compile_source
+
+    src = """
+VAR
+  long results[8]
+
+PUB main | i, x, d
+  x := -1_000_003
+  d := 7
+  repeat i from 0 to 400
+    results[0] += x / 1000
+    results[1] += x // 1000
+    results[2] += x / d
+    results[3] += x // d
+    results[4] += i / -3
+    results[5] += i // -3
+    x += 4_999
+    d := d * 3 // 101 - 50
+"""
+    assert_same(compile_source(src, "divmod.spin").binary, 4_000_000)
