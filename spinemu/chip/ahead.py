@@ -304,10 +304,12 @@ class RunAhead:
         self._close(c)
         self._rollbacks += 1
         c.cp = _REPLAY                      # (its private blocks must not open a stretch while replayed)
+        outer = self.rmw_limit              # (the intruder's loop goes on with its own limit)
         try:
             self._replay(c, key + 1 if c.id < by_id else key)
         finally:
             c.cp = None
+            self.rmw_limit = outer
 
     def _replay(self, c, limit: int) -> None:
         """Run cog ``c``'s private bytecodes again, in the exact order's way, while they start before ``limit``.
@@ -318,6 +320,7 @@ class RunAhead:
         """
         P = self._pblocks
         mem, H, ACC = self.mem, self._handlers, self.access_at
+        self.rmw_limit = limit
         ph = c.hub_phase
         t = c.t
         pc = c.pc
@@ -486,6 +489,7 @@ class RunAhead:
             self._end_preemption()
             return
         mem, watch, ACC = self.mem, self.watch, self.access_at
+        self.rmw_limit = limit
         H = self._guarded()
         ph = c.hub_phase
         t = c.t

@@ -328,6 +328,8 @@ class DataOps:
 
     def _assign_close(self, b, op: int, res) -> None:
         if len(res) == 4:                               # REPEAT: a conditional jump
+            if 0x40 <= op < 0xE0:                       # ... whose write-back is its last instruction
+                b.reach = max(b.reach, b.worst + max(res[2][1], res[3][1]) - 4)
             return self._branch(b, op, res[1], res[2], res[3])
         self._account(b, op, *res[1:])
 

@@ -448,6 +448,8 @@ class BlockCompiler(DataOps):
         ``rest`` is an int or an expression (``worst``: its largest value).
         """
         b.reach = max(b.reach, b.worst + self.acc[op])
+        if op & 3 == 2 and 0x40 <= op < 0xE0:          # an update: its write-back is its last instruction
+            b.reach = max(b.reach, b.worst + (rest if isinstance(rest, int) else worst) - 4)
         if isinstance(rest, int):
             b.t_start = b.now(rest)
             b.d += _ceil16(rest + 12)

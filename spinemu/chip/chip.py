@@ -191,6 +191,12 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         #: other bits of blocks.py (CODE, PROGRAM, WATCHPOINT) also send writes to watch_hit
         self.watch = bytearray(0x10000 >> 2)
         self._parked: list = []
+        #: updates whose write-back another cog's access comes before (Scheduler.defer_write), and
+        #: the earliest of their write moments; the run loops' limit the handlers compare against
+        self._pend: list = []
+        self._pend_at = _NEVER
+        self._pend_id = 8
+        self.rmw_limit = 0
         self.debug_info = debug_info
         #: called as f(cog, cycle) right after a cog changes its DIRA/OUTA (before other cogs run);
         #: f(cog, hub_addr, size, cycle) before a write of size bytes (a bytecode's or a PASM cog's)
@@ -328,6 +334,8 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         if c.state == PARKED:
             self._unpark(c, t)
         self._stop_ahead(c)
+        if self._pend:                          # stopped before its update's write-back: none comes
+            self._drop_pending(c)
         if c in self._pin_waiters:
             self._pin_waiters.remove(c)
         h = c.pin_hist

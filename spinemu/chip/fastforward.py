@@ -216,6 +216,7 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
     from .control import RebootRequested, Reschedule  # local: keep module import light
     acc = chip.access_at
     chip.learn_tracked = 0
+    chip.rmw_limit = limit
     failed = 0
     wlog = chip.warning_log
     warned = wlog.total if wlog is not None else 0

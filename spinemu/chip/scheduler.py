@@ -20,7 +20,7 @@ from .blocks import BUSY, CODE, PROGRAM, WATCHPOINT, BlockCompiler
 from .checks import write_size
 from .cog import PARKED, RUNNING, Cog
 from .control import CogStopped, Halted, Preempted, RebootRequested, Reschedule
-from .ahead import AHEAD, CLAIM, NOPRIV, RO, SHARED, _interpreted
+from .ahead import _WRITE_CHECKED, AHEAD, CLAIM, NOPRIV, RO, SHARED, _interpreted
 from .fastforward import INTERRUPTED, LEARN_AFTER, LEARN_HORIZON, learn_busy_loop, tracking_handlers
 
 __all__ = ["Scheduler", "NEVER"]
@@ -56,6 +56,8 @@ class Scheduler:
         c = self.cogs[cog]
         t = c.t
         self._run_spin(c, self._key(c) + 1)
+        while self._pend:                       # an update's write-back (no other cog runs in between)
+            self._apply_pending()
         return c.t - t
 
     def _schedule(self, limit: int, progress) -> str:
@@ -118,6 +120,13 @@ class Scheduler:
                                  ck + 1 if c is not None else max(self.now, self._ext_seen) + 1)
                     if self._pin_waiters:       # a listener may have added input changes
                         ext = self._next_external(limit)
+            # an update's write-back that another cog's access came between (defer_write)
+            # (on the same cycle as another cog's access, the lower cog id first, as between two cogs)
+            pa = self._pend_at
+            if pa < limit and (c is None or pa < ck or pa == ck and self._pend_id < c.id) \
+                    and (ext is None or pa <= ext):
+                self._apply_pending()
+                continue
             # an input edge or a counter edge first when it comes before the next cog's access
             # (a cog runs nothing with ``until`` at or before its key: the edge must go first)
             if ext is not None and (c is None or ext <= ck):
@@ -158,6 +167,8 @@ class Scheduler:
                     until = limit
             if ext is not None and ext < until:
                 until = ext
+            if pa < until:
+                until = pa + 1 if c.id < self._pend_id else pa
             if listening and until > self._listen_at:
                 until = self._listen_at         # back here in time to tell the pin listeners
             self.now = t
@@ -171,10 +182,14 @@ class Scheduler:
                     self._run_with_fast_forward(c, until)
                 else:
                     run(c, until)
+                if self._pend and self._preempt:    # the loop ended at a deferred write-back already
+                    self._end_preemption()
             except RebootRequested:
                 self.now = c.t
                 if self._ahead:         # the cogs ahead ran past the reboot: back to its moment
                     self._sync_all(c, self._reboot_key)
+                self._pend.clear()      # write-backs after the reboot's moment do not come
+                self._pend_at = _NEVER
                 return "reboot"
             if progress is not None and t >= next_report:
                 progress(t)
@@ -282,7 +297,9 @@ class Scheduler:
             pending = self._preempt             # (meant for the cog whose write woke this one)
             if pending:
                 self._end_preemption()
+            outer = self.rmw_limit              # (the writer's loop goes on with its own limit)
             self._run_spin(c, t_limit)
+            self.rmw_limit = outer
             if pending:
                 self._request_preemption()
 
@@ -333,6 +350,56 @@ class Scheduler:
                 woke = True
         if woke:
             self._request_preemption()
+
+    def watch_hit_w(self, writer: Cog, hub_addr: int, size: int, t: int, key: int) -> None:
+        """:meth:`watch_hit` for an update's write-back at cycle ``key`` (``size`` bytes)."""
+        if self.watch[hub_addr >> 2] & _OBSERVED:
+            for f in self.write_hooks:
+                f(writer, hub_addr, size, t)
+        self.watch_hit_at(writer, hub_addr, key)
+
+    def defer_write(self, writer: Cog, size: int, hub_addr: int, value: int, t: int, key: int) -> None:
+        """An update of ``writer`` (started at ``t``) read its variable before the run loop's
+        limit and writes it back at ``key``, at or after that limit: another cog's access comes
+        in between, so the write waits for its moment (:meth:`_apply_pending`).
+
+        On the chip the update reads the variable in one hub window and writes it
+        back in a later one; a write by another cog in between is lost, and a read
+        in between sees the old value.  ``size``: 0 byte, 1 word, 2 long.  The
+        writer's loop ends after this bytecode (its next access comes later anyway).
+        """
+        self._pend.append((key, writer.id, writer, size, hub_addr, value, t))
+        self._pend.sort()
+        self._pend_at, self._pend_id = self._pend[0][0], self._pend[0][1]
+        self._request_preemption()
+
+    def _apply_pending(self) -> None:
+        """Make the earliest deferred write-back (the scheduler's order: before any later access)."""
+        key, _, c, size, a, v, t = self._pend.pop(0)        # (the lower cog id on a tie)
+        self._pend_at, self._pend_id = (self._pend[0][0], self._pend[0][1]) if self._pend else (_NEVER, 8)
+        k = a >> 2
+        w = self.watch[k]
+        if w:
+            if self._ahead and w & _WRITE_CHECKED:          # the window of a cog ahead, or read-only
+                self._g_cog, self._g_key = c, key
+                try:
+                    self._guard_write(a)
+                finally:
+                    self._g_cog = None
+            self.watch_hit_w(c, a, 1 << size, t, key)
+        if size == 2:
+            self.mem_longs[k] = v
+        elif size == 1:
+            self.mem_words[a >> 1] = v
+        else:
+            self.mem[a] = v
+        if self._preempt:                       # (meant for a run loop: none is running)
+            self._end_preemption()
+
+    def _drop_pending(self, c: Cog) -> None:
+        """Cog ``c`` stops: its updates not written back yet never are."""
+        self._pend = [p for p in self._pend if p[2] is not c]
+        self._pend_at, self._pend_id = (self._pend[0][0], self._pend[0][1]) if self._pend else (_NEVER, 8)
 
     def _request_preemption(self) -> None:
         """End the running cog's loop after its current bytecode (see control.Preempted)."""
@@ -395,6 +462,7 @@ class Scheduler:
         """
         if self._ahead:                         # another cog is ahead: every access is checked (ahead.py)
             return self._run_guarded(c, limit, stop_pc)
+        self.rmw_limit = limit
         mem = self.mem
         H = self.handlers
         ACC = self.access_at
@@ -453,6 +521,7 @@ class Scheduler:
         pc = c.pc
         if not 0 <= pc < 0x10000:
             return self._run_spin(c, limit, stop_pc)
+        self.rmw_limit = limit
         B = self._blocks
         P = self._pblocks if self._private_ok else None
         AH = self._ahead

@@ -713,13 +713,19 @@ def build_handlers(chip, timing: Timing):
                 aop = mem[pc]
                 c.pc = pc + 1
                 new, arest = _assign(c, aop, L[a >> 2], MASK32, False)
+                rest = using_rest + arest
                 if a < 0x8000:
-                    if WATCH[a >> 2]:
-                        chip.watch_hit(c, a, t, op)
-                    L[a >> 2] = new & MASK32
+                    tf = t + 12
+                    w = tf + ((c.hub_phase - tf) & 15) + rest - 4      # the write-back: the last instruction
+                    if w >= chip.rmw_limit:     # another cog's access comes between the read and the write
+                        chip.defer_write(c, 2, a, new & MASK32, t, w)
+                    else:
+                        if WATCH[a >> 2]:
+                            chip.watch_hit_w(c, a, 4, t, w)
+                        L[a >> 2] = new & MASK32
                 elif outside is not None:
                     outside(c, a, 4, t)
-                return using_rest + arest
+                return rest
         h.__name__ = "op_var_long"
         return h
 
@@ -802,8 +808,25 @@ def build_handlers(chip, timing: Timing):
                 aop = mem[pc]
                 c.pc = pc + 1
                 new, arest = _assign(c, aop, read(a & align), MASK32, False)
-                sized_write(size, a, new, c, t, op)
-                return rest + arest
+                rest += arest
+                a &= 0xFFFF
+                if a < 0x8000:
+                    tf = t + 12
+                    w = tf + ((c.hub_phase - tf) & 15) + rest - 4      # the write-back: the last instruction
+                    if w >= chip.rmw_limit:     # another cog's access comes between the read and the write
+                        chip.defer_write(c, size, a & align, new & (0xFF, 0xFFFF, MASK32)[size], t, w)
+                        return rest
+                    if WATCH[a >> 2]:
+                        chip.watch_hit_w(c, a, 1 << size, t, w)
+                    if size == 0:
+                        mem[a] = new & 0xFF
+                    elif size == 1:
+                        W[a >> 1] = new & 0xFFFF
+                    else:
+                        L[a >> 2] = new & MASK32
+                elif outside is not None:
+                    outside(c, a, 1 << size, t)
+                return rest
         h.__name__ = "op_mem"
         return h
 

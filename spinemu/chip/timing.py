@@ -267,20 +267,24 @@ def access_offsets() -> list:
     that a cog reading a variable and another writing it see each other in
     the order of their hub accesses.  Measured on spinsim 0.99 logs of
     tests/data/chip/programs/access_*.spin (completion cycle of the hub
-    instruction that reads or writes the variable, minus the fetch's).  For
-    assignment operators it is the earliest write-back (WRITE's): an offset
-    must never exceed the bytecode's shortest path, or the order of one cog's
-    own bytecodes would break.  Other bytecodes touch only their own stack: 0.
+    instruction that reads or writes the variable, minus the fetch's).  An
+    update (a USING access with an assignment operator: ``x++``, ``x += n``)
+    reads its variable at the moment given here and writes it back with the
+    bytecode's last instruction, 4 cycles before the next bytecode starts
+    (tests/chip/tools/derive_update_moments.py measured both on every
+    access form and operator): the handlers write it then (see
+    :meth:`spinemu.chip.scheduler.Scheduler.defer_write`).  Other bytecodes
+    touch only their own stack: 0.
 
-    ==========================  ====  ====  =========
-    access                      push  pop   operators
-    ==========================  ====  ====  =========
-    VAR/LOC long ($40-$7F)       112   144   208
-    memory, offset operand       224   256   320
-    ... indexed                  240   272   336
+    ==========================  ====  ====  ===============
+    access                      push  pop   update (read)
+    ==========================  ====  ====  ===============
+    VAR/LOC long ($40-$7F)       112   144   192
+    memory, offset operand       224   256   304
+    ... indexed                  240   272   320
     memory, address popped       176   208   256
     ... indexed                  192   224   272
-    ==========================  ====  ====  =========
+    ==========================  ====  ====  ===============
 
     REG reads 144 (bit 220, range 244), SPR 164 (PUSH_SPR and USING_SPR: where
     they read the register), LOCKNEW/LOCKSET/LOCKCLR 112, COGSTOP 112 (when the
@@ -290,9 +294,9 @@ def access_offsets() -> list:
     """
     acc = [0] * 256
     for op in range(0x40, 0x80):
-        acc[op] = (112, 144, 208, 0)[op & 3]
+        acc[op] = (112, 144, 192, 0)[op & 3]
     for op in range(0x80, 0xE0):
-        table = (224, 256, 320) if (op >> 2) & 3 else (176, 208, 256)
+        table = (224, 256, 304) if (op >> 2) & 3 else (176, 208, 256)
         if op & 3 != 3:
             acc[op] = table[op & 3] + (16 if op & 0x10 else 0)
     acc[0x3D], acc[0x3E], acc[0x3F], acc[0x24], acc[0x26] = 220, 244, 144, 164, 164

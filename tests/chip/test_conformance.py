@@ -30,11 +30,7 @@ NAMES = sorted(os.path.splitext(os.path.basename(p))[0].replace(".expected", "")
 ENGINES = ["chip"]
 
 #: programs whose results spinemu does not reproduce yet, and why (docs/chip.md)
-KNOWN_DIFFERENCES = {
-    "race_lost_updates": "an update of a hub variable (x++, x += n) runs at once where it writes; on the chip "
-                         "it reads one hub window earlier, so another cog's update in between is lost: "
-                         "spinsim counts 1,915 of 2,000, spinemu 2,000",
-}
+KNOWN_DIFFERENCES: dict = {}
 
 
 def _marked(names):

@@ -4,7 +4,7 @@
 Usage (from the worktree root; needs OpenSpin and spinsim, which tests never need)::
 
     python tests/chip/tools/derive_update_moments.py [--openspin PATH] [--spinsim PATH]
-        [--json PATH] [--keep DIR] [--only SUBSTRING] [--samples]
+        [--json PATH] [--keep DIR] [--only SUBSTRING] [--brief]
 
 An *update* bytecode is a USING access (low two bits ``10``) of a VAR/LOC
 long ($40-$7F) or of memory ($80-$DF) followed by an assignment operator
@@ -24,7 +24,7 @@ It
 3. follows the cog's registers through the log (every ``R=`` value), so that
    every hub instruction gets its hub address, and splits the bytecode's hub
    instructions into the opcode/operand fetches (the register the fetch at
-   $009 reads through), the stack (the register a PUSH_IMM1's push writes
+   $009 reads through), the stack (the register a constant push ($34-$3B) writes
    through) and the *target*: all others, which must all hit one address
    per probe,
 4. reports, per variant, the offsets of the target reads and writes from the
@@ -83,8 +83,15 @@ VAR_BLOCK = """VAR
   long n, vl, vpad[6]
   long vlf
   long va[4]
+  word vw, vwa[4]
+  byte vb, vba[4]
+"""
+#: the same names, with every variable at a two-byte offset but n and vl
+VAR_FAR_BLOCK = """VAR
+  long n, vl, vpad[6]
   long vpad2[30]
-  long vlfar
+  long vlf
+  long va[4]
   word vw, vwa[4]
   byte vb, vba[4]
 """
@@ -104,7 +111,11 @@ LOCALS = "i, p, a, b, c, d, e, f, la[4], big[30], z"
 TARGETS = {
     "var_long": "vl",                 # $40-$5F compact
     "var_long_off1": "vlf",           # memory form, one-byte offset
-    "var_long_off2": "vlfar",         # two-byte offset
+    "var_long_off2": "vlf",           # two-byte offset (VAR_FAR_BLOCK for every *_off2 probe)
+    "var_word_off2": "vw",
+    "var_byte_off2": "vb",
+    "var_long_idx_off2": "va[i]",
+    "var_byte_idx_off2": "vba[i]",
     "var_word": "vw",
     "var_byte": "vb",
     "var_long_idx": "va[i]",
@@ -131,7 +142,12 @@ TARGETS = {
     "mem_long_idx": "long[p][i]",
     "mem_word_idx": "word[p][i]",
     "mem_byte_idx": "byte[p][i]",
+    "values": None,                   # value sweeps of the value-dependent operators on vl
 }
+
+#: value sweeps: divisors and dividends of every bit length, ENCODE of every top bit
+SWEEP_DIVISORS = [0, 1, -1] + [s * ((1 << k) | 1) for k in range(1, 32) for s in (1, -1)] + ["$8000_0000"]
+SWEEP_DIVIDENDS = [0, 1, 1000, -1000, "$7FFF_FFFF", "$8000_0000", 123456789]
 
 
 def statements(t: str) -> list:
@@ -158,10 +174,28 @@ def statements(t: str) -> list:
     return out
 
 
+def sweep_statements(t: str = "vl") -> list:
+    """``t /= d``, ``t //= d`` over divisors and dividends; ENCODE, SQRT, MUL over values."""
+    out = []
+    for x in SWEEP_DIVIDENDS:
+        for dv in SWEEP_DIVISORS:
+            for op in ("/=", "//="):
+                out += [f"{t} := {x}", f"{t} {op} {dv}"]
+    for k in range(33):
+        for x in ([0] if k == 32 else [1 << k, (1 << k) * 2 - 1 if k < 31 else -1]):
+            for op in (">|", "^^", "|<", "||", "-"):
+                out += [f"{t} := {x}", f"{op}{t}"]
+            for op in ("*=", "**=", "->=", "<<=", "~>="):
+                out += [f"{t} := {x}", f"{t} {op} {x}"]
+    return out
+
+
 def probe_source(name: str) -> str:
     t = TARGETS[name]
-    body = ["  i := 1", "  p := @va"] + ["  " + s for s in statements(t)]
-    return VAR_BLOCK + DAT_BLOCK + f"PUB main | {LOCALS}\n" + "\n".join(body) + "\n"
+    stmts = sweep_statements() if t is None else statements(t)
+    body = ["  i := 1", "  p := @va"] + ["  " + s for s in stmts]
+    var = VAR_FAR_BLOCK if name.endswith("_off2") else VAR_BLOCK
+    return var + DAT_BLOCK + f"PUB main | {LOCALS}\n" + "\n".join(body) + "\n"
 
 
 # ----------------------------------------------------------------------------- log analysis
@@ -225,10 +259,12 @@ def analyse(name: str, image: bytes, ref: dict) -> list:
             h = ops.get(id(ln))
             if h and ln[1] == 0x009 and fetch_reg is None:
                 fetch_reg = h[2]
-            if h and r["op"] == 0x38 and h[0] == "wr" and stack_reg is None:
+            if h and 0x34 <= r["op"] <= 0x3B and h[0] == "wr" and stack_reg is None:   # constant push
                 stack_reg = h[2]
         if fetch_reg is not None and stack_reg is not None:
             break
+    if fetch_reg is None or stack_reg is None:
+        raise RuntimeError(f"{name}: no opcode fetch or no constant push in the log")
     out = []
     for idx, r in enumerate(recs):
         v = variant_of(image, r["pc"], r["op"])
@@ -352,6 +388,37 @@ def table(rows) -> str:
     return "\n".join(lines)
 
 
+def rules(rows) -> str:
+    """Two compact tables: the read moment per access kind, the write-back delay per operator."""
+    acc = collections.OrderedDict()
+    ops = collections.OrderedDict()
+    for r in rows:
+        a = f"{r['family'][:4]} {r['base']} {r['size']}{' idx' if r['indexed'] else ''}" \
+            f"{' off' + str(r['off_bytes']) if r['off_bytes'] else ''} [{','.join(r['opcodes'])}]"
+        e = acc.setdefault(a, dict(read=set(), write_only=set(), end_minus_write=set()))
+        e["read"].update(r["read"])
+        if r["operator"] == "WRITE":
+            e["write_only"].update(r["write"])
+        e["end_minus_write"].update(x - w for x in r["end"] for w in r["write"] if len(r["write"]) == 1)
+        if r["read"]:
+            o = r["operator"] + (f"/{r['repeat']}" if r["repeat"] else "")
+            d = ops.setdefault(o, dict(delay=set(), push=set(), sizes=set(), n=0))
+            d["delay"].update(w - rd for rd in r["read"] for w in r["write"])
+            d["push"].add(r["push"])
+            d["sizes"].add(r["size"])
+            d["n"] += r["samples"]
+    out = ["", "Read moment per access kind (all operators but WRITE read there; WRITE, which reads",
+           "nothing, writes 16 cycles later; end - write = cycles from the write-back to the next bytecode):",
+           f"{'access':30} {'read':>8} {'WRITE w':>8} {'end-w':>6}"]
+    for a, e in acc.items():
+        out.append(f"{a:30} {fmt_set(e['read']):>8} {fmt_set(e['write_only']):>8} {fmt_set(e['end_minus_write']):>6}")
+    out += ["", "Write-back delay (write - read) per operator, over every access kind, size and push form:",
+            f"{'operator':24} {'write-read':>14} {'samples':>8}"]
+    for o, d in sorted(ops.items(), key=lambda kv: (min(kv[1]["delay"]), kv[0])):
+        out.append(f"{o:24} {fmt_set(d['delay']):>14} {d['n']:>8}")
+    return "\n".join(out)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--openspin", default="/opt/oracles/OpenSpin/build/openspin")
@@ -360,6 +427,7 @@ def main(argv=None):
                     help="PASM instructions spinsim logs per probe")
     ap.add_argument("--json", help="write the per-variant results (and value-dependent samples) here")
     ap.add_argument("--keep", help="keep probe sources, images and logs in this directory")
+    ap.add_argument("--brief", action="store_true", help="print only the two summary tables")
     ap.add_argument("--only", help="run only the probes whose name contains this")
     a = ap.parse_args(argv)
     names = [n for n in TARGETS if not a.only or a.only in n]
@@ -368,7 +436,9 @@ def main(argv=None):
     print("Offsets: cycles from tf (first instruction after the opcode fetch) to the completion of the")
     print("hub instruction (log line + 4, as spinemu.chip.timing.access_offsets counts). read = first")
     print("target read, write = last target write, end = start of the next bytecode; * = not constant.")
-    print(table(rows))
+    if not a.brief:
+        print(table(rows))
+    print(rules(rows))
     for p in problems:
         print("PROBLEM:", p)
     if a.json:
