@@ -319,7 +319,7 @@ class RunAhead:
         ``limit``); they touch only ``c``'s window and code.
         """
         P = self._pblocks
-        mem, H, ACC = self.mem, self._handlers, self.access_at
+        mem, H = self.mem, self._handlers
         self.rmw_limit = limit
         ph = c.hub_phase
         t = c.t
@@ -348,7 +348,7 @@ class RunAhead:
                     tf += (ph - tf) & 15
                 self._want[0] = -1
             op = mem[pc]
-            if tf + ACC[op] >= limit:
+            if tf + self.access_offset(pc) >= limit:
                 break
             c.pc = pc + 1
             t = tf + H[op](c, op, t)
@@ -488,7 +488,7 @@ class RunAhead:
         if self._preempt:                   # as _run_spin: a pending preemption runs nothing
             self._end_preemption()
             return
-        mem, watch, ACC = self.mem, self.watch, self.access_at
+        mem, watch = self.mem, self.watch
         self.rmw_limit = limit
         H = self._guarded()
         ph = c.hub_phase
@@ -502,7 +502,7 @@ class RunAhead:
                 op = mem[pc]
                 tf = t + 12
                 tf += (ph - tf) & 15
-                key = tf + ACC[op]
+                key = tf + self.access_offset(pc)
                 if key >= limit:
                     break
                 if watch[(pc & 0xFFFF) >> 2] & AHEAD:   # code in the window of a cog ahead

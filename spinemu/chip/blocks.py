@@ -447,7 +447,7 @@ class BlockCompiler(DataOps):
 
         ``rest`` is an int or an expression (``worst``: its largest value).
         """
-        b.reach = max(b.reach, b.worst + self.acc[op])
+        b.reach = max(b.reach, b.worst + self.chip.access_offset(b.op_pc))
         if op & 3 == 2 and 0x40 <= op < 0xE0:          # an update: its write-back is its last instruction
             b.reach = max(b.reach, b.worst + (rest if isinstance(rest, int) else worst) - 4)
         if isinstance(rest, int):
@@ -464,7 +464,7 @@ class BlockCompiler(DataOps):
             b.worst += _ceil16(worst + 12)
 
     def _terminal_rest(self, b: _Block, op: int) -> None:
-        b.reach = max(b.reach, b.worst + self.acc[op])
+        b.reach = max(b.reach, b.worst + self.chip.access_offset(b.op_pc))
 
     # ------------------------------------------------------------------ operands
     def _byte(self, b: _Block) -> int:
@@ -490,6 +490,7 @@ class BlockCompiler(DataOps):
 
     # ------------------------------------------------------------------ bytecodes
     def _op(self, b: _Block) -> None:
+        b.op_pc = b.pc                              # (its access moment: chip.access_offset)
         op = self._byte(b)
         if op >= 0xE0:
             return self._math(b, op)

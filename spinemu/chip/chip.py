@@ -49,7 +49,7 @@ from .registers import Registers
 from .scheduler import NEVER, Scheduler
 from .rom import INTERPRETER_ENTRY, build_rom
 from .spin import build_handlers
-from .timing import Timing, access_offsets, load_timing
+from .timing import Timing, access_offsets, load_timing, wide_offsets
 
 __all__ = ["Chip", "RunResult", "COG_LOAD_CYCLES", "COMPAT_MODES"]
 
@@ -218,6 +218,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
             self.checks = RuntimeChecks(self, self.warning_log, debug_info)
         self.handlers = build_handlers(self, self.timing)
         self.access_at = access_offsets()
+        self.access_wide = wide_offsets()     # +16 for a two-byte offset (timing.wide_offsets)
         self._handlers = list(self.handlers)      # the real ones, while a preemption is pending
         self._preempt = False
         self._halt_reason = None

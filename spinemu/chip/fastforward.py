@@ -214,7 +214,6 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
     marks = []                      # per bytecode: (t, log position, stack pointer)
     P = c.hub_phase
     from .control import RebootRequested, Reschedule  # local: keep module import light
-    acc = chip.access_at
     chip.learn_tracked = 0
     chip.rmw_limit = limit
     failed = 0
@@ -227,7 +226,8 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
         op = mem[c.pc]
         tf = c.t + 12
         tf += (P - tf) & 15
-        if tf + acc[op] >= limit:
+        akey = tf + chip.access_offset(c.pc)
+        if akey >= limit:
             return INTERRUPTED
         if _impure(chip, c, op):
             return None
@@ -251,14 +251,14 @@ def learn_busy_loop(chip, c, handlers, log, limit: int):
         marks.append((c.t, len(log), c.sp))
         t = c.t
         c.pc = (c.pc + 1) & 0xFFFF
-        chip._g_cog, chip._g_key = c, tf + acc[op]
+        chip._g_cog, chip._g_key = c, akey
         try:
             c.t = tf + handlers[op](c, op, t)
         except Reschedule as e:      # not expected for pure ops; be safe
             c.t = tf + e.rest
             return None
         except RebootRequested:
-            chip._reboot_key = tf + acc[op]
+            chip._reboot_key = akey
             raise
         except IndexError:          # as the run loops: a stack or address past the end of memory
             raise chip.fault(c, c.pc - 1, "stack or address out of hub range") from None

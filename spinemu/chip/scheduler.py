@@ -71,7 +71,7 @@ class Scheduler:
         access comes from :meth:`_key`.
         """
         cogs = self.cogs
-        mem, acc = self.mem, self.access_at
+        mem, acc, wide = self.mem, self.access_at, self.access_wide
         self.run_limit = limit
         next_report = 0
         traced = self.recorder is not None
@@ -100,11 +100,15 @@ class Scheduler:
                     if e.__class__ is not str:
                         key = e.key(k)
                     else:
+                        pc = k.pc
+                        op = mem[pc]
                         key = k.t + 12
-                        key += ((k.hub_phase - key) & 15) + acc[mem[k.pc]]
+                        key += ((k.hub_phase - key) & 15) + acc[op] + (wide[op] & (mem[(pc + 1) & 0xFFFF] >> 3))
                 else:
+                    pc = k.pc
+                    op = mem[pc]
                     key = k.t + 12
-                    key += ((k.hub_phase - key) & 15) + acc[mem[k.pc]]
+                    key += ((k.hub_phase - key) & 15) + acc[op] + (wide[op] & (mem[(pc + 1) & 0xFFFF] >> 3))
                 if c is None or key < ck:
                     c2, ck2 = c, ck
                     c, ck = k, key
@@ -205,7 +209,13 @@ class Scheduler:
         if c.engine.__class__ is not str:
             return c.engine.key(c)
         tf = c.t + 12
-        return tf + ((c.hub_phase - tf) & 15) + self.access_at[self.mem[c.pc]]
+        return tf + ((c.hub_phase - tf) & 15) + self.access_offset(c.pc)
+
+    def access_offset(self, pc: int) -> int:
+        """Cycles from the fetch of the bytecode at ``pc`` to its access of shared state (timing.access_offsets)."""
+        mem = self.mem
+        op = mem[pc]
+        return self.access_at[op] + (self.access_wide[op] & (mem[(pc + 1) & 0xFFFF] >> 3))
 
     def _next_external(self, limit: int):
         """The next input change or counter edge after the last one handled, if before ``limit``."""
@@ -303,8 +313,8 @@ class Scheduler:
             if pending:
                 self._request_preemption()
 
-    def watch_hit(self, writer: Cog, hub_addr: int, t: int, op: int) -> None:
-        """``writer``'s bytecode ``op``, started at ``t``, is about to write a watched hub long.
+    def watch_hit(self, writer: Cog, hub_addr: int, t: int, op: int, pc: int = -1) -> None:
+        """``writer``'s bytecode ``op`` (at ``pc`` if known), started at ``t``, is about to write a watched hub long.
 
         ``write_hooks`` (runtime checks, debugger watchpoints) are told
         first, as ``f(writer, hub_addr, size, t)`` (``size``: the bytes the
@@ -319,7 +329,8 @@ class Scheduler:
             for f in self.write_hooks:
                 f(writer, hub_addr, size, t)
         tf = t + 12
-        self.watch_hit_at(writer, hub_addr, tf + ((writer.hub_phase - tf) & 15) + self.access_at[op])
+        at = self.access_offset(pc) if pc >= 0 else self.access_at[op]
+        self.watch_hit_at(writer, hub_addr, tf + ((writer.hub_phase - tf) & 15) + at)
 
     def pasm_write_hit(self, writer: Cog, hub_addr: int, size: int, t: int, key: int, pc: int) -> None:
         """A PASM cog's WRBYTE/WRWORD/WRLONG (``size`` bytes) at cog address ``pc``, started at ``t``,
@@ -466,6 +477,8 @@ class Scheduler:
         mem = self.mem
         H = self.handlers
         ACC = self.access_at
+        WIDE = self.access_wide
+        near = limit - 16                       # (only there can a two-byte offset's 16 cycles matter)
         P = c.hub_phase
         t = c.t
         n = 0
@@ -476,8 +489,8 @@ class Scheduler:
                 op = mem[pc]
                 tf = t + 12
                 tf += (P - tf) & 15
-                if tf + ACC[op] >= limit:       # another cog touches the hub first
-                    break
+                if tf + ACC[op] >= near and tf + ACC[op] + (WIDE[op] & (mem[(pc + 1) & 0xFFFF] >> 3)) >= limit:
+                    break                       # another cog touches the hub first
                 c.pc = pc + 1
                 t = tf + H[op](c, op, t)
                 n += 1
@@ -495,7 +508,7 @@ class Scheduler:
         except RebootRequested:
             c.bytecodes += n + 1
             c.t = tf
-            self._reboot_key = tf + ACC[op]
+            self._reboot_key = tf + self.access_offset(pc)
             raise
         except IndexError:
             raise self.fault(c, c.pc - 1, "stack or address out of hub range") from None
@@ -558,7 +571,7 @@ class Scheduler:
                         return
                 # the interpreter's step, as in _run_spin
                 op = mem[pc]
-                key = tf + ACC[op]
+                key = tf + ACC[op] + (self.access_wide[op] & (mem[(pc + 1) & 0xFFFF] >> 3))
                 if key >= limit:
                     if P is not None and P[pc] is not NOPRIV:
                         c.t = t

@@ -86,11 +86,11 @@ def build_handlers(chip, timing: Timing):
     checks = getattr(chip, "checks", None)      # runtime warnings (spinemu.chip.checks), or None
     outside = checks.write_outside if checks is not None and checks.wants("write-outside-hub") else None
 
-    def sized_write(size, a, v, c, t, op):
+    def sized_write(size, a, v, c, t, op, pc=-1):
         a &= 0xFFFF
         if a < 0x8000:
             if WATCH[a >> 2]:
-                chip.watch_hit(c, a, t, op)
+                chip.watch_hit(c, a, t, op, pc)
             if size == 0:
                 mem[a] = v & 0xFF
             elif size == 1:
@@ -787,10 +787,11 @@ def build_handlers(chip, timing: Timing):
                     return rest
         elif access == 1:
             def h(c, op, t):
+                pc = c.pc - 1
                 a, rest = address(c)
                 sp = c.sp - 4
                 c.sp = sp
-                sized_write(size, a, L[sp >> 2], c, t, op)
+                sized_write(size, a, L[sp >> 2], c, t, op, pc)
                 return rest
         elif access == 3:
             def h(c, op, t):

@@ -26,7 +26,8 @@ from __future__ import annotations
 from functools import lru_cache
 from typing import Optional
 
-__all__ = ["Timing", "load_timing", "hub_align", "segments_rest", "math_param", "MATH_REF", "access_offsets"]
+__all__ = ["Timing", "load_timing", "hub_align", "segments_rest", "math_param", "MATH_REF", "access_offsets",
+           "wide_offsets"]
 
 
 def hub_align(t: int, phase: int) -> int:
@@ -306,3 +307,20 @@ def access_offsets() -> list:
     acc[0x21] = 112
     acc[0x28] = acc[0x2C] = 172
     return acc
+
+
+def wide_offsets() -> bytes:
+    """Per opcode: 16 where a two-byte offset operand (its first byte >= $80) delays the access.
+
+    A VAR, LOC or DAT access ($80-$DF with a base) whose offset is 128 or more
+    reads its second offset byte first: its hub access comes 16 cycles later
+    than :func:`access_offsets` says (measured on spinsim: a long push 240, a
+    pop 272).  The moment of the bytecode at ``pc`` is therefore
+    ``acc[op] + (wide[op] & (mem[pc + 1] >> 3))``: bit 7 of the offset's
+    first byte, shifted to 16.
+    """
+    wide = bytearray(256)
+    for op in range(0x80, 0xE0):
+        if (op >> 2) & 3 and op & 3 != 3:
+            wide[op] = 16
+    return bytes(wide)

@@ -23,7 +23,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..bytecode import TABLE, decode_assign, decode_unsigned, instruction_length
-from ..chip.timing import MATH_REF, Timing, access_offsets
+from ..chip.timing import MATH_REF, Timing, access_offsets, wide_offsets
 
 __all__ = ["Op", "price", "chain", "split", "split_read", "anchor_at", "jump_op", "ceil16", "access_at", "access_range"]
 
@@ -38,6 +38,7 @@ class Op:
     #                       "paid" (a helper adds value-dependent cycles when it runs)
     hub: bool = False     # reads or writes hub RAM other cogs may share (VAR, DAT, memory, locks)
     helper: str = ""      # "paid": the spinemu.translate.spin helper that pays it (div, strsize ...)
+    at: int = -1          # cycles from its fetch to its shared access, where a two-byte offset delays it
 
 
 def ceil16(n: int) -> int:
@@ -167,7 +168,8 @@ def price(T: Timing, data: bytes, run_params: int = 0, inside: bool = True) -> l
         if op == 0x0F and not (ops and 0x10 <= ops[-1].code <= 0x13):
             kind = "look"       # LOOK_DONE right after the value: a lookup whose items the runtime pays
         helper = paid_helper(data, i) if kind == "paid" else ""
-        ops.append(Op(op, _rest(T, data, i, op, run_params, inside), kind, _hub(op, data, i), helper or ""))
+        at = _ACCESS[op] + (_WIDE[op] & (data[i + 1] >> 3)) if _WIDE[op] and i + 1 < n else -1
+        ops.append(Op(op, _rest(T, data, i, op, run_params, inside), kind, _hub(op, data, i), helper or "", at))
         i += length
     return ops
 
@@ -184,6 +186,7 @@ def _hub(op: int, data=b"", i: int = 0) -> bool:
 
 
 _ACCESS = access_offsets()
+_WIDE = wide_offsets()
 
 
 def access_at(ops):
@@ -203,7 +206,7 @@ def access_range(ops):
     first = last = None
     for o in ops:
         if o.hub:
-            at = before + _ACCESS[o.code]
+            at = before + (o.at if o.at >= 0 else _ACCESS[o.code])
             first = at if first is None else first
             last = at
         before += ceil16(o.rest + 12)
