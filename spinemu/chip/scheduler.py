@@ -369,7 +369,8 @@ class Scheduler:
                 f(writer, hub_addr, size, t)
         self.watch_hit_at(writer, hub_addr, key)
 
-    def defer_write(self, writer: Cog, size: int, hub_addr: int, value: int, t: int, key: int) -> None:
+    def defer_write(self, writer: Cog, size: int, hub_addr: int, value: int, t: int, key: int,
+                    preempt: bool = True) -> None:
         """An update of ``writer`` (started at ``t``) read its variable before the run loop's
         limit and writes it back at ``key``, at or after that limit: another cog's access comes
         in between, so the write waits for its moment (:meth:`_apply_pending`).
@@ -382,7 +383,8 @@ class Scheduler:
         self._pend.append((key, writer.id, writer, size, hub_addr, value, t))
         self._pend.sort()
         self._pend_at, self._pend_id = self._pend[0][0], self._pend[0][1]
-        self._request_preemption()
+        if preempt:
+            self._request_preemption()
 
     def _apply_pending(self) -> None:
         """Make the earliest deferred write-back (the scheduler's order: before any later access)."""

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 
-from .costs import access_range, chain
+from .costs import access_range, chain, store_at
 
 __all__ = ["Code", "COMMENT_COLUMN", "comment_text", "docstring_text"]
 
@@ -166,6 +166,9 @@ class Code:
                 a = access_range(ops)
                 if a is not None and a[0] == a[1]:
                     a = a[0]
+                s = store_at(ops) if slot == "b" else None
+                if s is not None:           # the run ends storing a hub variable at ``s``
+                    a = (a, a, s) if isinstance(a, int) else (a[0], a[1], s)
                 row.append(None if k is None and not extra else (k, extra) if a is None else (k, extra, a))
             mid = entry.get("mid")
             if mid:

@@ -25,7 +25,8 @@ from dataclasses import dataclass
 from ..bytecode import TABLE, decode_assign, decode_unsigned, instruction_length
 from ..chip.timing import MATH_REF, Timing, access_offsets, wide_offsets
 
-__all__ = ["Op", "price", "chain", "split", "split_read", "anchor_at", "jump_op", "ceil16", "access_at", "access_range"]
+__all__ = ["Op", "price", "chain", "split", "split_read", "anchor_at", "jump_op", "ceil16", "access_at", "access_range",
+           "store_at"]
 
 
 @dataclass(frozen=True)
@@ -201,7 +202,13 @@ def access_at(ops):
 
 
 def access_range(ops):
-    """``(first, last)``: cycles from a run's first fetch to its first and its last shared access, or None."""
+    """``(first, last)``: cycles from a run's first fetch to its first and its last shared access, or None.
+
+    An update of a hub variable (``x++``, ``x += n``: a USING access) reads it
+    at its access moment and writes it back with its last instruction, 4 cycles
+    before the next bytecode starts: that write-back is its last access (unless
+    its cycles depend on values, which a helper pays when it runs).
+    """
     before = 0
     first = last = None
     for o in ops:
@@ -209,8 +216,21 @@ def access_range(ops):
             at = before + (o.at if o.at >= 0 else _ACCESS[o.code])
             first = at if first is None else first
             last = at
+            if 0x40 <= o.code < 0xE0 and o.code & 3 == 2 and o.kind != "paid":
+                last = before + o.rest - 4
         before += ceil16(o.rest + 12)
     return None if first is None else (first, last)
+
+
+def store_at(ops):
+    """Cycles from a run's first fetch to an update's write-back, if the run ends updating a hub
+    variable (``x++``, ``x += n``) whose cycles do not depend on values, else None."""
+    if not ops or not ops[-1].hub:
+        return None
+    o = ops[-1]
+    if not (0x40 <= o.code < 0xE0 and o.code & 3 == 2) or o.kind == "paid":
+        return None
+    return sum(ceil16(x.rest + 12) for x in ops[:-1]) + o.rest - 4
 
 
 #: bytecodes whose cycles depend on values: a helper of spinemu.translate.spin adds the difference when

@@ -41,6 +41,7 @@ _COG, _PHASE, _T, _RT = "__spin_c", "__spin_p", "__spin_t", "__spin_RT"
 _L, _LS = "__spin_L", "__spin_Ls"
 _PAUSE, _PAUSE_AT = "__spin_pause_tick", "__spin_pause_tick_at"
 _ADDR, _VALUE = "__spin_a", "__spin_v"
+_DEFER = "__spin_defer"
 _DIVIDEND, _DX = "__spin_m", "__spin_dx"
 
 
@@ -145,10 +146,22 @@ class _Hub(ast.NodeTransformer):
     def _read(self, size: int, index) -> ast.Subscript:
         return ast.Subscript(_name(_VIEWS[size][0]), index, ast.Load())
 
-    def _store_lines(self, size: int, index: str, limit: int) -> list:
-        """``if index < limit: view[index] = __spin_v & mask``."""
+    def _store_lines(self, size: int, index: str, limit: int, at=None) -> list:
+        """``if index < limit: view[index] = __spin_v & mask``.
+
+        ``at``: the store's moment, cycles after the statement's first fetch
+        (weave.py's ``spin_store_at``); when another cog's access comes first,
+        the chip makes the store then (:func:`spinemu.translate.runtime.defer_store`).
+        """
         view, mask = _VIEWS[size][1], _VIEWS[size][5]
-        return _parse(f"if {index} < {limit}:\n    {view}[{index}] = {_VALUE} & {mask}")
+        if at is None:
+            return _parse(f"if {index} < {limit}:\n    {view}[{index}] = {_VALUE} & {mask}")
+        shift = _VIEWS[size][4]
+        return _parse(f"if {index} < {limit}:\n"
+                      f"    if {_T} + {at} >= {_RT}.limit:\n"
+                      f"        {_DEFER}({shift}, ({index}) << {shift}, {_VALUE} & {mask}, {_T} + {at})\n"
+                      f"    else:\n"
+                      f"        {view}[{index}] = {_VALUE} & {mask}")
 
     def visit_Attribute(self, node):
         if isinstance(node.ctx, ast.Load):
@@ -175,7 +188,7 @@ class _Hub(ast.NodeTransformer):
             if op is not None:
                 value = ast.BinOp(self._read(size, _name(local)), op, value)
             out = [ast.Assign([_name(_VALUE, True)], value)]
-            out += self._store_lines(size, local, 0x8000 >> _VIEWS[size][4])
+            out += self._store_lines(size, local, 0x8000 >> _VIEWS[size][4], getattr(node, "spin_store_at", None))
         elif isinstance(target, ast.Subscript):
             found = self._address(target)
             if found is None:
@@ -189,7 +202,7 @@ class _Hub(ast.NodeTransformer):
             else:                       # the value is computed before the index
                 out = [ast.Assign([_name(_VALUE, True)], value), at]
             index = f"{_ADDR} >> {shift}" if shift else _ADDR
-            out += _parse(f"if {_ADDR} < 0x8000:\n    {_VIEWS[size][1]}[{index}] = {_VALUE} & {_VIEWS[size][5]}")
+            out += self._store_lines(size, index, 0x8000 >> shift, getattr(node, "spin_store_at", None))
         else:
             return None
         return [ast.fix_missing_locations(ast.copy_location(s, node)) for s in out]
@@ -411,3 +424,4 @@ def install(namespace: dict) -> None:
     namespace[_RT] = spin.RT
     namespace[_PAUSE] = runtime.pause_tick
     namespace[_PAUSE_AT] = runtime.pause_tick_at
+    namespace[_DEFER] = runtime.defer_store

@@ -35,7 +35,7 @@ from .costs import drop_result_delta
 from .spin import RT, Abort
 
 __all__ = ["PythonChip", "Engine", "instantiate", "run_class", "tick", "tick_at", "tick_read", "add",
-           "pause_tick", "pause_tick_at"]
+           "pause_tick", "pause_tick_at", "defer_store"]
 
 _NEVER = 1 << 62
 _ACCESS = access_offsets()
@@ -83,6 +83,14 @@ def pause_tick_at(t: int, access: int) -> None:
     """:func:`tick_at`'s hand-over to the scheduler: at its shared access, or at the run's end."""
     RT.keys[RT.cog.id] = t + access if t + access >= RT.limit else RT.final
     RT.pause()
+
+
+def defer_store(size: int, addr: int, value: int, key: int) -> None:
+    """A store (``size``: 0 byte, 1 word, 2 long) whose moment ``key`` comes after another cog's next
+    access: the chip makes it then, in the cogs' order (``Scheduler.defer_write``), as the bytecode engine
+    does an update's write-back; the cog goes on to its next shared access, where it hands over."""
+    c = RT.cog
+    c.engine.chip.defer_write(c, size, addr, value, key, key, preempt=False)
 
 
 def tick_read(k, access, rest: int) -> None:

@@ -68,7 +68,7 @@ def _charge_stmts(charge, anchor) -> list:
         out.append(_call(_TICK_READ, (aligned, access, charge[3]), anchor))
     elif aligned is not None:
         if len(charge) > 2:
-            access = tuple(charge[2]) if isinstance(charge[2], (tuple, list)) else (charge[2],)
+            access = tuple(charge[2])[:2] if isinstance(charge[2], (tuple, list)) else (charge[2],)
             out.append(_call(_TICK_AT, (aligned, *access), anchor))
         else:
             out.append(_call(_TICK, (aligned,), anchor))
@@ -155,7 +155,7 @@ _LOOKUPS = frozenset(("lookup", "lookupz", "lookdown", "lookdownz"))
 def _weave_body(stmts: list, table: dict, depths: dict, lookups: dict) -> list:
     out = []
     calls = None                    # (line, its depths, how many its calls used)
-    for s in stmts:
+    for k, s in enumerate(stmts):
         for field in ("body", "orelse", "finalbody"):
             if isinstance(getattr(s, field, None), list) and not isinstance(s, ast.FunctionDef):
                 setattr(s, field, _weave_body(getattr(s, field), table, depths, lookups))
@@ -217,12 +217,25 @@ def _weave_body(stmts: list, table: dict, depths: dict, lookups: dict) -> list:
             out.append(ast.fix_missing_locations(s))
             out.extend(_charge_stmts(after, s))
             continue
+        if before is not None and len(before) > 2 and isinstance(before[2], (tuple, list)) \
+                and len(before[2]) > 2 and isinstance(s, ast.AugAssign) and _run_ends_here(stmts, k, table):
+            # an update that ends its run (x++, x += n): written back this many cycles after the run's first
+            # fetch; when another cog's access comes first, the store waits for its moment (inline.py)
+            s.spin_store_at = before[2][2]
         out.append(s)
         if other is not None and isinstance(s, (ast.If, ast.While, ast.For)):
             s.orelse = _charge_stmts(other, s) + s.orelse
         out.extend(_charge_stmts(post, s))
         out.extend(_charge_stmts(after, s))
     return out
+
+
+def _run_ends_here(stmts: list, k: int, table: dict) -> bool:
+    """Does the run charged before ``stmts[k]`` end with it (the next statement, if any, pays its own)?"""
+    if k + 1 == len(stmts):
+        return True
+    row = table.get(stmts[k + 1].lineno)
+    return row is not None and row[0] is not None
 
 
 def _weave_function(fn: ast.FunctionDef, table: dict, depths: dict, lookups: dict) -> ast.FunctionDef:

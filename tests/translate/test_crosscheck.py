@@ -38,9 +38,6 @@ KNOWN_GAPS: dict = {
     "stack_overflow.spin": "a cog's stack overruns into the next cog's frame in hub RAM; the Python "
                            "engine keeps its frames in Python",
     "write_into_code.spin": "overwrites its own bytecode, which the Python translation does not run",
-    "race_lost_updates.spin": "two cogs update one hub variable without a lock: the bytecode engine writes an "
-                              "update back a few hub windows after it read it, as the chip does, so updates "
-                              "are lost; the Python engine runs a statement's hub accesses as one step",
 }
 
 
