@@ -7,7 +7,9 @@ Layout (Propeller Manual v1.2, "Main Memory"; P8X32A datasheet, "Main ROM")::
     $D000-$DFFF  anti-log table: 2048 words, (2**(i/2048) - 1) * 65536
     $E000-$F001  sine table: 2049 words, sin(i/2048 * pi/2) * 65535 (first quadrant)
     $F004-$FFFF  boot loader and Spin interpreter (PASM)               not modelled: reads 0,
-                 except the three bytecodes at $FFF9 described below
+                 except the three bytecodes at $FFF9 described below and $FFFF
+    $FFFF        the chip's version, 1 on the P8X32A: Spin's CHIPVER reads it (``byte[$FFFF]``;
+                 Propeller Manual, CHIPVER), and drivers such as VGA64 and PS2_HID check it
 
 The tables are computed here from the manual's definitions, rounded to the
 nearest integer; checksums of all 6,145 entries agree with the ROM that
@@ -24,7 +26,7 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
-__all__ = ["ROM_BASE", "INTERPRETER_ENTRY", "RETURN_TO_STOP", "build_rom"]
+__all__ = ["ROM_BASE", "INTERPRETER_ENTRY", "RETURN_TO_STOP", "CHIP_VERSION", "build_rom"]
 
 ROM_BASE = 0x8000
 #: the code address COGINIT gets for a Spin cog: the ROM interpreter's image
@@ -32,6 +34,8 @@ INTERPRETER_ENTRY = 0xF004
 #: where a cog's top-level method returns to (see module docstring)
 RETURN_TO_STOP = 0xFFF9
 _STOP_BYTECODES = bytes([0x3F, 0x89, 0x21])
+#: where CHIPVER reads the chip's version, and the P8X32A's
+CHIP_VERSION_ADDR, CHIP_VERSION = 0xFFFF, 1
 
 
 def _table(start: int, values) -> tuple[int, bytes]:
@@ -52,6 +56,7 @@ def build_rom() -> bytes:
         _table(0xD000, (round((2 ** (i / 2048) - 1) * 65536) for i in range(2048))),
         _table(0xE000, (round(math.sin(i / 2048 * math.pi / 2) * 65535) for i in range(2049))),
         (RETURN_TO_STOP, _STOP_BYTECODES),
+        (CHIP_VERSION_ADDR, bytes([CHIP_VERSION])),
     ]
     for addr, data in parts:
         rom[addr - ROM_BASE: addr - ROM_BASE + len(data)] = data

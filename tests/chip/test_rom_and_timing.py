@@ -72,3 +72,9 @@ def test_access_offsets_lie_inside_the_shortest_path_of_their_bytecode():
         table = t.mem_using if op & 3 == 2 else t.mem
         assert acc[op] <= table[(op, False)] + (min(t.assign_mem) if op & 3 == 2 else 0), hex(op)
     assert acc[0x3F] <= t.reg[(0x3F, 0)] and acc[0x3D] <= t.reg[(0x3D, 0)] and acc[0x3E] <= t.reg[(0x3E, 0)]
+
+
+def test_rom_ends_with_the_chip_version_chipver_reads():
+    from spinemu.chip.rom import CHIP_VERSION
+
+    assert CHIP_VERSION == 1 and build_rom()[0xFFFF - 0x8000] == 1      # the P8X32A
