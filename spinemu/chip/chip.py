@@ -322,13 +322,16 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         if keep != (0, 0):
             self.note_pins(c, t_first)
 
-    def stop_cog(self, c: Cog, t: int, why: str, by: Optional[Cog] = None, seen: Optional[int] = None) -> None:
+    def stop_cog(self, c: Cog, t: int, why: str, by: Optional[Cog] = None, seen: Optional[int] = None,
+                 restart: bool = False) -> None:
         """Stop cog ``c`` at cycle ``t`` (its pins float then).
 
         ``by`` is the cog whose instruction stops it (default ``c``) and
         ``seen`` the cycle of that instruction's access (default ``t``): a
         pin read by another cog at that cycle sees the stop when ``by``'s id
         is lower, a later one always (as for a pin write, :meth:`note_pins`).
+        ``restart``: a COGINIT restarts it at once; in spinsim mode the cog keeps
+        its DIRA/OUTA across the restart (``start_spin_cog``), so its pins never float.
         """
         if c.state == STOPPED:
             return
@@ -349,6 +352,8 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         self.now = max(self.now, t)
         self._last_stop = max(self._last_stop, t)
         self.cog_events.append((t, c.id, "stop", why))
+        if restart and self.spinsim:
+            return
         self._seq += 1
         self.pin_events.append((t, self._seq, c.id, c.dira, c.outa, False))
         self._pin_history(c, t, False)
@@ -378,7 +383,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         else:
             target = self.cogs[cog_id]
         if target.state != STOPPED:
-            self.stop_cog(target, done, f"restarted by cog {c.id}", by=c, seen=done - 4)
+            self.stop_cog(target, done, f"restarted by cog {c.id}", by=c, seen=done - 4, restart=True)
         if self.spinsim:
             # the new cog's first slot is the COGINIT's last cycle, one step later
             # when spinsim has already stepped the target in that cycle (a lower id, or itself)

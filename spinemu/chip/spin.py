@@ -24,7 +24,7 @@ jumps.  Everything else is written for clarity.
 from __future__ import annotations
 
 from ..bytecode import TABLE
-from .control import RebootRequested, Reschedule
+from .control import CogStopped, RebootRequested, Reschedule
 from .mathops import BINARY, MASK32, UNARY
 from .timing import Timing, access_offsets, math_param
 
@@ -542,6 +542,8 @@ def build_handlers(chip, timing: Timing):
         code = pop(c)
         cog_id = pop(c)
         result = chip.coginit(c, cog_id, code, par, tf)
+        if result == c.id:              # it restarted itself: the new program's start time stands
+            raise CogStopped(T.coginit[op == 0x28])
         if op == 0x28:
             push(c, result)
         raise Reschedule(T.coginit[op == 0x28])
