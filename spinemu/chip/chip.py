@@ -565,8 +565,21 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
 
     # ------------------------------------------------------------------ tools
     def peek(self, hub_addr: int, size: int = 4) -> int:
-        """The byte, word or long (``size`` 1, 2, 4) of hub RAM at ``hub_addr`` (unsigned)."""
+        """The byte, word or long (``size`` 1, 2, 4) of hub RAM at ``hub_addr`` (unsigned).
+
+        An update whose bytecode has run but whose write-back still waits for its
+        moment (``Scheduler.defer_write``: another cog's access comes first) shows
+        its new value: what the cog wrote, as a debugger or test reads it between
+        bytecodes.
+        """
         a = hub_addr & 0xFFFF
+        if self._pend:
+            mem = bytearray(self.mem[a & ~3: (a & ~3) + 4])
+            for _key, _id, _c, psize, pa, v, _t in self._pend:
+                for k in range(1 << psize):
+                    if (pa + k) & ~3 == a & ~3:
+                        mem[(pa + k) & 3] = (v >> (8 * k)) & 0xFF
+            return int.from_bytes(mem[a & 3: (a & 3) + size], "little")
         if size == 1:
             return self.mem[a]
         if size == 2:

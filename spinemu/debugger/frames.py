@@ -114,7 +114,8 @@ class SpinCogView:
     def frames(self) -> list:
         """The call stack, innermost first."""
         c, info = self.cog, self.info
-        L, W = self.chip.mem_longs, self.chip.mem_words
+        W = self.chip.mem_words
+        peek = self.chip.peek
         out = []
         pc, dbase, pbase, vbase = c.pc, c.dbase, c.pbase, c.vbase
         for _ in range(_MAX_FRAMES):
@@ -132,9 +133,9 @@ class SpinCogView:
             if method is not None:
                 for slot in method.slots:
                     a = (dbase + slot.offset) & 0xFFFF
-                    frame.values.append((slot, L[a >> 2]))
+                    frame.values.append((slot, peek(a)))     # (with a write-back still on its way)
                     if slot.count > 1:
-                        frame.array_values[slot.name] = [L[((a + 4 * k) & 0xFFFF) >> 2] for k in range(slot.count)]
+                        frame.array_values[slot.name] = [peek((a + 4 * k) & 0xFFFF) for k in range(slot.count)]
             out.append(frame)
             if not 8 <= dbase < 0x8000:
                 break

@@ -598,7 +598,7 @@ class Debugger(PasmDebugging):
                 k = index or 0
                 if not 0 <= k < slot.count:
                     raise ExpressionError(f"{name}[{k}]: index outside 0..{slot.count - 1}")
-                return signed(self.chip.mem_longs[((frame.dbase + slot.offset + 4 * k) & 0xFFFF) >> 2])
+                return signed(self.chip.peek((frame.dbase + slot.offset + 4 * k) & 0xFFFF))
         found = None
         if "." not in name and frame is not None and frame.instance is not None:
             v = frame.instance.find(name)

@@ -120,3 +120,18 @@ def test_two_cogs_racing_lose_the_same_updates_with_and_without_running_ahead_an
     assert len(ends) == 1
     (total, _), = ends
     assert total != 300                         # 300 without a lost update: the cogs overlap, and some are lost
+
+
+def test_peek_between_bytecodes_shows_an_update_whose_write_back_waits():
+    image = compile_source(RACE, "race.spin").binary
+    chip = Chip(image, run_ahead=False, fast_forward=False)
+    vbase = chip.header.vbase
+    seen = 0
+    for limit in range(150_000, 400_000, 997):      # stop the run at many moments of the race
+        chip.advance(limit)
+        # write-backs of x (the raced variable) on their way: the last one is what x becomes
+        waiting = [value for _key, _id, _cog, size, addr, value, _t in chip._pend if size == 2 and addr == vbase]
+        if waiting and waiting[-1] != chip.mem_longs[vbase >> 2]:
+            assert chip.peek(vbase) == waiting[-1]
+            seen += 1
+    assert seen
