@@ -223,14 +223,18 @@ def access_range(ops):
 
 
 def store_at(ops):
-    """Cycles from a run's first fetch to an update's write-back, if the run ends updating a hub
-    variable (``x++``, ``x += n``) whose cycles do not depend on values, else None."""
+    """Cycles from a run's first fetch to its store, if the run ends storing a hub variable after its
+    first shared access: a POP (``x := a + b``) at its access, an update (``x++``, ``x += n``) at its
+    write-back (unless its cycles depend on values); else None."""
     if not ops or not ops[-1].hub:
         return None
     o = ops[-1]
-    if not (0x40 <= o.code < 0xE0 and o.code & 3 == 2) or o.kind == "paid":
+    if not (0x40 <= o.code < 0xE0 and o.code & 3 in (1, 2)) or o.kind == "paid":
         return None
-    return sum(ceil16(x.rest + 12) for x in ops[:-1]) + o.rest - 4
+    before = sum(ceil16(x.rest + 12) for x in ops[:-1])
+    at = before + (o.rest - 4 if o.code & 3 == 2 else o.at if o.at >= 0 else _ACCESS[o.code])
+    first = access_range(ops)[0]
+    return at if at > first else None
 
 
 #: bytecodes whose cycles depend on values: a helper of spinemu.translate.spin adds the difference when

@@ -218,8 +218,8 @@ def _weave_body(stmts: list, table: dict, depths: dict, lookups: dict) -> list:
             out.extend(_charge_stmts(after, s))
             continue
         if before is not None and len(before) > 2 and isinstance(before[2], (tuple, list)) \
-                and len(before[2]) > 2 and isinstance(s, ast.AugAssign) and _run_ends_here(stmts, k, table):
-            # an update that ends its run (x++, x += n): written back this many cycles after the run's first
+                and len(before[2]) > 2 and isinstance(s, (ast.Assign, ast.AugAssign)) and _run_ends_here(stmts, k, table):
+            # a store that ends its run (x := a + b, x++, x += n): made this many cycles after the run's first
             # fetch; when another cog's access comes first, the store waits for its moment (inline.py)
             s.spin_store_at = before[2][2]
         out.append(s)
