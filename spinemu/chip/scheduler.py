@@ -377,8 +377,11 @@ class Scheduler:
 
         On the chip the update reads the variable in one hub window and writes it
         back in a later one; a write by another cog in between is lost, and a read
-        in between sees the old value.  ``size``: 0 byte, 1 word, 2 long.  The
-        writer's loop ends after this bytecode (its next access comes later anyway).
+        in between sees the old value.  ``size``: 0 byte, 1 word, 2 long.  With
+        ``preempt`` the writer's bytecode loop ends after this bytecode (its next
+        access comes later anyway); the Python engine, whose statements store this
+        way too (``spinemu.translate.runtime.defer_store``), hands over at its next
+        access itself.
         """
         self._pend.append((key, writer.id, writer, size, hub_addr, value, t))
         self._pend.sort()
