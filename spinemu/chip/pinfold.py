@@ -12,7 +12,8 @@ outputs)``):
   changes, from the counters' register history.
 
 :class:`PinFold` merges them, a counter mark before a pin event of the same
-cycle, and keeps every change of ``(dir, out)`` in :attr:`PinFold.changes`.
+cycle and the lower cog's event first, and keeps every change of ``(dir, out)``
+in :attr:`PinFold.changes`.
 :meth:`PinFold.advance` folds up to a cycle; the scheduler's pin listeners
 (:mod:`.listen`) call it as the run goes, the trace (:meth:`.pins.Pins._build_trace`)
 at the end, so both see the same states.  Each call costs time in
@@ -26,6 +27,12 @@ from bisect import bisect_left
 from .countermarks import CounterMarks
 
 __all__ = ["PinFold"]
+
+
+def _order(event) -> tuple:
+    """Pin events in time order; on one cycle the lower cog first (as spinsim steps its cogs), and
+    one cog's in the order it made them."""
+    return event[0], event[2], event[1]
 
 
 class PinFold:
@@ -74,7 +81,7 @@ class PinFold:
                         self.late += 1
                         new[k] = (floor,) + ev[1:]
             pending += new
-            pending.sort()
+            pending.sort(key=_order)
         n = bisect_left(pending, (upto,))
         marks = self.marks.take(upto) if chip.counters_on else ()
         self.folded_to = upto

@@ -9,6 +9,7 @@ stop inside such a bytecode leaves on the pins.
 """
 from spinemu.chip import Chip
 from spinemu.compiler.program import compile_source
+from spinemu.chip.pinfold import PinFold
 
 TOGGLER = """
 CON
@@ -43,3 +44,15 @@ def test_a_cog_stopped_inside_a_bytecode_that_writes_its_pins_later_never_drives
         h = chip.cogs[1].pin_hist
         caught += any(when > stop for when, *_ in h)
     assert caught, "no stop landed between a bytecode's access and its write"
+
+
+def test_changes_on_one_cycle_are_in_cog_order_as_spinsim_steps_its_cogs():
+    # two PASM cogs write their pins on the same cycle: the trace lists the lower cog's change
+    # first, whichever cog spinemu ran first (the Parallax library's ADC Max1270 demo does this)
+    chip = Chip(compile_source("PUB main\n", "nothing.spin").binary)     # (the records are made here)
+    chip.pin_events[:] = [(100, 1, 3, 1 << 10, 1 << 10, True), (100, 2, 1, 1 << 30, 1 << 30, True),
+                          (200, 3, 3, 1 << 10, 0, True), (200, 4, 1, 1 << 30, 0, True)]
+    fold = PinFold(chip)
+    fold.advance(300)
+    assert fold.changes == [(100, 1 << 30, 1 << 30), (100, 1 << 30 | 1 << 10, 1 << 30 | 1 << 10),
+                            (200, 1 << 30 | 1 << 10, 1 << 10), (200, 1 << 30 | 1 << 10, 0)]
