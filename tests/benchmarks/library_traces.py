@@ -270,7 +270,8 @@ def child(path: str, std: str, cycles: int) -> dict:
             pass
         compared_early = counter_t0 is not None and not any("vid" in w.lower() for w in why_not)
         if compared_early:
-            early = first_difference(state_changes(ref, counter_t0), state_changes(cand, counter_t0))
+            # (up to the cycle before: a pin may follow the counter from the cycle its mode is set)
+            early = first_difference(state_changes(ref, counter_t0 - 1), state_changes(cand, counter_t0 - 1))
     if "error" in err.lower() or not logged:
         res["class"] = "spinsim error"
         res["detail"] = err.strip().splitlines()[-1][:200] if err.strip() else "?"
