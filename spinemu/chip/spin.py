@@ -100,6 +100,28 @@ def build_handlers(chip, timing: Timing):
         elif outside is not None:
             outside(c, a, 1 << size, t)
 
+    def write_back(size, a, v, c, t, rest):
+        """An update's store of ``v`` (``size`` 0 byte, 1 word, 2 long) to ``a``: with the bytecode's
+        last instruction, 4 cycles before the next starts (``rest`` after the fetch), or, when another
+        cog's access comes first, at that moment through the scheduler (``Scheduler.defer_write``)."""
+        a &= 0xFFFF
+        if a < 0x8000:
+            tf = t + 12
+            w = tf + ((c.hub_phase - tf) & 15) + rest - 4
+            if w >= chip.rmw_limit:
+                chip.defer_write(c, size, a & (0xFFFF, 0xFFFE, 0xFFFC)[size], v & (0xFF, 0xFFFF, MASK32)[size], t, w)
+                return
+            if WATCH[a >> 2]:
+                chip.watch_hit_w(c, a, 1 << size, t, w)
+            if size == 0:
+                mem[a] = v & 0xFF
+            elif size == 1:
+                W[a >> 1] = v & 0xFFFF
+            else:
+                L[a >> 2] = v & MASK32
+        elif outside is not None:
+            outside(c, a, 1 << size, t)
+
     def fetched(c, t):
         """The cycle the opcode fetch of a bytecode started at ``t`` completes."""
         tf = t + 12
@@ -716,17 +738,7 @@ def build_handlers(chip, timing: Timing):
                 c.pc = pc + 1
                 new, arest = _assign(c, aop, L[a >> 2], MASK32, False)
                 rest = using_rest + arest
-                if a < 0x8000:
-                    tf = t + 12
-                    w = tf + ((c.hub_phase - tf) & 15) + rest - 4      # the write-back: the last instruction
-                    if w >= chip.rmw_limit:     # another cog's access comes between the read and the write
-                        chip.defer_write(c, 2, a, new & MASK32, t, w)
-                    else:
-                        if WATCH[a >> 2]:
-                            chip.watch_hit_w(c, a, 4, t, w)
-                        L[a >> 2] = new & MASK32
-                elif outside is not None:
-                    outside(c, a, 4, t)
+                write_back(2, a, new, c, t, rest)
                 return rest
         h.__name__ = "op_var_long"
         return h
@@ -812,23 +824,7 @@ def build_handlers(chip, timing: Timing):
                 c.pc = pc + 1
                 new, arest = _assign(c, aop, read(a & align), MASK32, False)
                 rest += arest
-                a &= 0xFFFF
-                if a < 0x8000:
-                    tf = t + 12
-                    w = tf + ((c.hub_phase - tf) & 15) + rest - 4      # the write-back: the last instruction
-                    if w >= chip.rmw_limit:     # another cog's access comes between the read and the write
-                        chip.defer_write(c, size, a & align, new & (0xFF, 0xFFFF, MASK32)[size], t, w)
-                        return rest
-                    if WATCH[a >> 2]:
-                        chip.watch_hit_w(c, a, 1 << size, t, w)
-                    if size == 0:
-                        mem[a] = new & 0xFF
-                    elif size == 1:
-                        W[a >> 1] = new & 0xFFFF
-                    else:
-                        L[a >> 2] = new & MASK32
-                elif outside is not None:
-                    outside(c, a, 1 << size, t)
+                write_back(size, a, new, c, t, rest)
                 return rest
         h.__name__ = "op_mem"
         return h
