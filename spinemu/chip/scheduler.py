@@ -95,15 +95,8 @@ class Scheduler:
             c = c2 = None
             ck = ck2 = 0
             for k in running:
-                if generic:
-                    e = k.engine
-                    if e.__class__ is not str:
-                        key = e.key(k)
-                    else:
-                        pc = k.pc
-                        op = mem[pc]
-                        key = k.t + 12
-                        key += ((k.hub_phase - key) & 15) + acc[op] + (wide[op] & (mem[(pc + 1) & 0xFFFF] >> 3))
+                if generic and k.engine.__class__ is not str:
+                    key = k.engine.key(k)
                 else:
                     pc = k.pc
                     op = mem[pc]
