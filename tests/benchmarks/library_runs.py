@@ -251,17 +251,21 @@ ORDER = ["ran", "compile: missing object", "compile: missing data file", "compil
          "compile: error", "compile: spinemu only", "fault", "timeout", "INTERNAL"]
 
 
+def class_counts(results: list, order: list) -> list:
+    """``(class, files)`` for each class that occurs: those of ``order`` first, in that order."""
+    counts = collections.Counter(r["class"] for r in results)
+    return [(c, counts[c]) for c in order + sorted(set(counts) - set(order)) if counts.get(c)]
+
+
 def report(results: list, library: str, show: int, heading: str) -> int:
     """Print the summary table and the worst cases; the number of bad results (internal, gaps, spinemu-only)."""
     def rel(p):
         return os.path.relpath(p, library)
     n = len(results)
-    counts = collections.Counter(r["class"] for r in results)
     print(f"\n{heading}: {n} files")
     print(f"{'class':30s} {'files':>6s} {'share':>7s}")
-    for c in ORDER + sorted(set(counts) - set(ORDER)):
-        if counts.get(c):
-            print(f"{c:30s} {counts[c]:6d} {100 * counts[c] / n:6.1f} %")
+    for c, k in class_counts(results, ORDER):
+        print(f"{c:30s} {k:6d} {100 * k / n:6.1f} %")
     ran = [r for r in results if r["class"] == "ran"]
     if ran:
         pasm = sum(1 for r in ran if r.get("pasm"))

@@ -360,19 +360,17 @@ def main(argv=None) -> int:
     if a.json:
         with open(a.json, "w") as fh:
             json.dump(results, fh, indent=1)
-    counts = collections.Counter(r["class"] for r in results)
     print(f"\n{heading}, {a.cycles:,} cycles each, {time.perf_counter() - t0:.0f} s wall ({a.jobs} jobs)")
     print(f"{'class':16s} {'files':>5s}")
-    for c in CLASSES + sorted(set(counts) - set(CLASSES)):
-        if counts.get(c):
-            print(f"{c:16s} {counts[c]:5d}")
+    for c, k in library_runs.class_counts(results, CLASSES):
+        print(f"{c:16s} {k:5d}")
     for c in ("differs", "not comparable", "spinsim error", "compile problem", "timeout", "INTERNAL"):
         rows = [r for r in results if r["class"] == c]
         if rows:
             print(f"\n-- {c} ({len(rows)}):")
             for r in rows:
                 print(f"  {shown(r['path'], library)}: {r.get('detail', '')}")
-    return 1 if counts.get("differs") else 0
+    return 1 if any(r["class"] == "differs" for r in results) else 0
 
 
 if __name__ == "__main__":
