@@ -339,6 +339,7 @@ def cmd_run(args, out: _Out) -> int:
     bench = RunBench(args, out, clock_hz=clock, pin_count=32, engine="the Propeller", eeprom_image=eeprom,
                      session=session)
     t0 = time.perf_counter()
+    chip = None
     with session or contextlib.nullcontext(), bench.run_context():
         if args.engine == "python":
             if kind != "spin":
@@ -358,7 +359,11 @@ def cmd_run(args, out: _Out) -> int:
                         inputs=bench.chip_inputs(_compat(args)), source_map=source_map,
                         labels=prog.dat_labels() if prog is not None else None,
                         warn=log if log is not None else False,
-                        debug_info=prog.debug_info() if prog is not None else None)
+                        debug_info=prog.debug_info() if prog is not None else None,
+                        steady_skip=not args.no_steady_skip)
+            if not args.no_cache:
+                from .chip.codecache import for_image
+                chip.code_cache = for_image(image)
             profiler = _attach_profiler(chip, prog) if args.profile else None
             bench.attach(chip)
             with _pasm_trace_sink(args, out, chip, prog) as sink:
@@ -372,6 +377,8 @@ def cmd_run(args, out: _Out) -> int:
                 else:
                     result = chip.run(max_cycles=limit)
     wall = time.perf_counter() - t0
+    if chip is not None and chip.code_cache is not None:
+        chip.code_cache.save()         # the blocks this run compiled, for the next run
     _write_trace(args, bench.trace(result.trace))
     bench.finish()
     if args.dump_hub:
@@ -391,6 +398,8 @@ def cmd_run(args, out: _Out) -> int:
                 ("cogs", f"{started} started, {stopped} stopped"),
                 ("speed", f"{sim_s / wall:.1f}x real time ({wall:.2f} s wall)" if wall > 0 else "-")]
         rows += _pasm_rows(result)
+        if result.stats.get("steady_periods_skipped"):
+            rows.append(("steady", f"{result.stats['steady_periods_skipped']:,} periods of a steady state skipped"))
         if args.trace:
             rows.append(("trace", f"{args.trace} ({len(result.trace.changes)} changes)"))
         if session:
@@ -498,6 +507,7 @@ def _run_pbasic(args, out: _Out) -> int:
         session = ConsoleSession(args, out, CLOCK_HZ, live_text=not args.view)
     bench = RunBench(args, out, clock_hz=CLOCK_HZ, pin_count=16, engine="the BASIC Stamp", session=session)
     t0 = time.perf_counter()
+    chip = None
     with session or contextlib.nullcontext(), bench.run_context():
         result = run_file(args.target, seconds=seconds, timing=args.timing or "exact", inputs=bench.spec or None,
                           debug_in=args.debug_in, parts=bench.bench if bench.active else ())
@@ -775,6 +785,12 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--trace-cog-file", metavar="FILE", default="-",
                    help="where --trace-cog writes its log (default: standard output)")
     r.add_argument("--no-progress", action="store_true", help="no progress bar")
+    r.add_argument("--no-cache", action="store_true",
+                   help="compile the program's hot blocks anew instead of taking them from the cache of "
+                        "earlier runs (~/.cache/spinemu; SPINEMU_CACHE=0 turns it off for good)")
+    r.add_argument("--no-steady-skip", action="store_true",
+                   help="run every period of a steady state paced by WAITCNT (a blinking LED, a PWM loop) "
+                        "instead of skipping the periods proven to repeat (the results are the same)")
     r.add_argument("-q", "--quiet", action="store_true", help="no summary")
     _warning_options(r)
     r.add_argument("--profile", action="store_true",

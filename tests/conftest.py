@@ -2,8 +2,16 @@
 
 ``--update-golden``: tests that compare output with a golden file rewrite the
 golden file instead (review the diff before committing it).
+
+The cache of compiled blocks that ``spinemu run`` keeps between runs goes to a
+temporary directory of the test session, not to the user's ~/.cache.
 """
+import os
+import tempfile
+
 import pytest
+
+os.environ.setdefault("SPINEMU_CACHE_DIR", tempfile.mkdtemp(prefix="spinemu-test-cache-"))
 
 
 def pytest_addoption(parser):

@@ -424,7 +424,9 @@ class BlockCompiler(DataOps):
         ns: dict = {}
         env = dict(self.env)
         env["K"] = code
-        exec(compile(src, f"<spin {'private ' if b.private else ''}block ${start:04X}>", "exec"), env, ns)
+        name = f"<spin {'private ' if b.private else ''}block ${start:04X}>"
+        cache = self.chip.code_cache
+        exec(cache.compile(src, name) if cache is not None else compile(src, name, "exec"), env, ns)
         fn = ns["blk"]
         fn.source = src
         fn.foot = (lo, hi, b.dlo, b.dhi)

@@ -132,6 +132,8 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
             ``CompiledProgram.debug_info()``): warnings then name variables and
             methods, point at file:line:col, and the checks that need names
             (stack arrays, uninitialized locals) run.
+        steady_skip: skip whole periods of a steady state paced by WAITCNT
+            (:mod:`.steady`; results unchanged; needs ``fast_forward``).
 
     Raises:
         ImageError: if ``image`` is not a valid Propeller image.
@@ -147,7 +149,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
     def __init__(self, image: bytes, *, compat: str = "spinsim", inputs=None,
                  source_map: Optional[Callable] = None, fast_forward: bool = True,
                  timing: Optional[Timing] = None, compile_blocks: bool = True, labels=None,
-                 run_ahead: bool = True, warn=True, debug_info=None):
+                 run_ahead: bool = True, warn=True, debug_info=None, steady_skip: bool = True):
         if compat not in COMPAT_MODES:
             raise ValueError(f"compat must be one of {COMPAT_MODES}, not {compat!r}")
         binary = load_image(bytes(image))
@@ -246,6 +248,8 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         self.last_target = None     # the target value of the latest assignment operator
         # compiled blocks (blocks.py): one entry per hub address, a stub until compiled
         self._compiler = None
+        #: where compiled blocks' code comes from between runs (codecache.py; ``spinemu run`` sets it)
+        self.code_cache = None
         #: times a bytecode address starts a run before a block is compiled for it
         self.block_threshold = BLOCK_THRESHOLD
         if compile_blocks:
@@ -255,6 +259,14 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         else:
             self._run_plain = self._run_spin
         self._init_run_ahead(run_ahead)     # running ahead (ahead.py)
+        #: cycles between two calls of the scheduler's progress hook
+        self.progress_every = 10_000_000
+        #: skipping the periods of a steady state (steady.py), or None
+        self._steady = None
+        if steady_skip and fast_forward:
+            from .steady import LOOK_EVERY, SteadySkip
+            self._steady = SteadySkip(self)
+            self.progress_every = LOOK_EVERY
         self.now = 0
         #: the run's cycle limit (engines that run ahead never pass it)
         self.run_limit = _NEVER
@@ -529,6 +541,8 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         self._last_limit = limit
         self._listen_end = limit + 1 if limit < _NEVER else _NEVER
         try:
+            if self._steady is not None:
+                return self._steady.advance(limit, progress)
             return self._schedule(limit, progress)
         except Halted as h:
             return h.reason
@@ -626,7 +640,8 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         return {"fast_forward": self.fast_forward, "busy_loops_learned": self._ff_loops,
                 "bytecodes_skipped": self._ff_skipped,
                 "blocks_compiled": self._compiler.count if self._compiler is not None else 0,
-                "run_ahead": self.run_ahead, "private_stretches": self._stretches, "rollbacks": self._rollbacks}
+                "run_ahead": self.run_ahead, "private_stretches": self._stretches, "rollbacks": self._rollbacks,
+                "steady_periods_skipped": self._steady.periods if self._steady is not None else 0}
 
 
     def _boot(self) -> None:

@@ -190,7 +190,7 @@ class Scheduler:
                 return "reboot"
             if progress is not None and t >= next_report:
                 progress(t)
-                next_report = t + 10_000_000
+                next_report = t + self.progress_every
 
     def _key(self, c: Cog) -> int:
         """When cog ``c``'s next bytecode touches shared state (see timing.access_offsets).

@@ -244,3 +244,22 @@ def test_every_file_the_help_examples_name_exists():
     assert named, "the examples name programs from spin_src"
     missing = [p for p in named if not (ROOT / p).exists()]
     assert not missing, f"--help names files that do not exist: {missing}"
+
+
+def test_run_skips_a_steady_state_writes_the_same_trace_and_says_what_it_skipped(tmp_path):
+    src = tmp_path / "blink.spin"
+    src.write_text("CON\n  _clkmode = xtal1 + pll16x\n  _xinfreq = 5_000_000\n"
+                   "VAR\n  long stack[32], count\n"
+                   "PUB main | t\n  cognew(follow, @stack)\n  dira[0]~~\n  t := cnt\n  repeat\n"
+                   "    !outa[0]\n    count++\n    waitcnt(t += clkfreq / 1000)\n"
+                   "PRI follow | t\n  dira[1]~~\n  t := cnt\n  repeat\n"
+                   "    outa[1] := count & 1\n    waitcnt(t += 40_000)\n")
+    plain, skipped = tmp_path / "plain.log", tmp_path / "skipped.log"
+    code, out, err = run("run", src, "--seconds", "3", "--trace", plain, "--no-progress", "--no-steady-skip")
+    assert code == 0, err
+    assert "periods of a steady state skipped" not in out
+    code, out, err = run("run", src, "--seconds", "3", "--trace", skipped, "--no-progress")
+    assert code == 0, err
+    assert "periods of a steady state skipped" in out
+    assert skipped.read_text() == plain.read_text()
+    assert len(read_log(plain.read_text()).changes) > 5000

@@ -1,0 +1,101 @@
+"""Compiled blocks kept on disk between runs of the same program, as Python keeps ``__pycache__``.
+
+Compiling the Python source of a program's hot Spin blocks (:mod:`.blocks`)
+takes a good part of a short run (0.03 s of the column's demo).  ``spinemu run`` gives its chip a :class:`CodeCache` for the
+image: the code objects compiled in one run are written to one file, and the
+next run of the same image takes them from there instead of compiling.
+
+A cached code object is found by the exact source text it was compiled
+from (and its name), so a stale or foreign entry is never used: it just
+misses.  The file is read with :mod:`marshal` (no code runs while loading)
+and written atomically; a damaged or unreadable file counts as empty, and a
+cache that cannot be written is silently skipped.  The directory is
+``$SPINEMU_CACHE_DIR``, else ``$XDG_CACHE_HOME/spinemu``, else
+``~/.cache/spinemu``, in a subdirectory per spinemu version and Python bytecode
+magic; ``SPINEMU_CACHE=0`` (or ``spinemu run --no-cache``) turns it off.  At
+most :data:`KEEP` files are kept (the least recently used go first).
+"""
+from __future__ import annotations
+
+import hashlib
+import importlib.util
+import marshal
+import os
+import tempfile
+from typing import Optional
+
+__all__ = ["CodeCache", "for_image", "cache_dir", "KEEP"]
+
+#: files (programs) kept per cache directory
+KEEP = 256
+
+
+def cache_dir() -> Optional[str]:
+    """The directory for this spinemu and Python, or None when caching is off."""
+    if os.environ.get("SPINEMU_CACHE", "1") == "0":
+        return None
+    from .. import __version__
+    base = os.environ.get("SPINEMU_CACHE_DIR")
+    if not base:
+        xdg = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+        base = os.path.join(xdg, "spinemu")
+    return os.path.join(base, f"blocks-{__version__}-{importlib.util.MAGIC_NUMBER.hex()}")
+
+
+def for_image(image: bytes) -> Optional["CodeCache"]:
+    """The cache of compiled blocks for a program image, or None when caching is off."""
+    d = cache_dir()
+    if d is None:
+        return None
+    return CodeCache(os.path.join(d, hashlib.sha256(bytes(image)).hexdigest()[:32] + ".marshal"))
+
+
+class CodeCache:
+    """Code objects by ``(source, name)``, loaded from and saved to ``path``."""
+
+    def __init__(self, path: str):
+        self.path = path
+        self.codes: dict = {}
+        self.hits = self.misses = 0
+        self._dirty = False
+        try:
+            with open(path, "rb") as f:
+                codes = marshal.loads(f.read())
+            if isinstance(codes, dict):
+                self.codes = codes
+                os.utime(path)      # (recently used: pruned last)
+        except Exception:           # missing, damaged, from another Python: start empty
+            self.codes = {}
+
+    def compile(self, src: str, name: str):
+        """``compile(src, name, "exec")``, from the cache when it has it."""
+        key = (src, name)
+        code = self.codes.get(key)
+        if code is not None:
+            self.hits += 1
+            return code
+        self.misses += 1
+        code = compile(src, name, "exec")
+        self.codes[key] = code
+        self._dirty = True
+        return code
+
+    def save(self) -> None:
+        """Write the cache if this run compiled something new (errors are ignored)."""
+        if not self._dirty:
+            return
+        d = os.path.dirname(self.path)
+        try:
+            os.makedirs(d, exist_ok=True)
+            fd, tmp = tempfile.mkstemp(dir=d, suffix=".tmp")
+            with os.fdopen(fd, "wb") as f:
+                f.write(marshal.dumps(self.codes))
+            os.replace(tmp, self.path)
+            self._dirty = False
+            files = [os.path.join(d, n) for n in os.listdir(d) if n.endswith(".marshal")]
+            if len(files) > KEEP:
+                files.sort(key=os.path.getmtime)
+                for p in files[:len(files) - KEEP]:
+                    os.unlink(p)
+        except OSError:
+            pass

@@ -1,0 +1,680 @@
+"""Exact skipping of whole periods of a chip in a steady state.
+
+A stepper driver ticking every millisecond while the main cog counts a pause
+down, a PWM loop, a blinking LED: for seconds of simulated time the chip
+repeats the same pattern, and every repeat costs the interpreter the same
+work.  This module lets the chip skip such repeats without changing a single
+result (pin trace, hub RAM, end cycle):
+
+1. **Recording.**  When the chip has been calm for a while (three looks in
+   a row of the scheduler's progress hook found every running cog a Spin
+   cog that mostly waits, and no PASM cog, counter output, pin wait, parked
+   busy loop, bench part or debugger in the way: :meth:`SteadySkip.eligible`),
+   the chip runs on exactly as always, but through the interpreter's own
+   handlers with logging hub views (as the busy-loop learner does,
+   fastforward.py).  Every bytecode is recorded with its cog, address, start
+   cycle and the hub reads and writes it made, and each time the first cog
+   that ran comes back to the bytecode address it started at (the *anchor*),
+   the state of every cog is noted.
+2. **Finding a period.**  Two stretches of ``n`` anchor intervals, one after
+   the other, qualify as periods A and B when they are the same program: the
+   same bytecodes of the same cogs at the same cycles relative to their
+   start, the same hub addresses accessed, the cogs in the same state at the
+   three anchors, the same pin changes, and a length ``P`` that is a multiple
+   of 16 (the hub window).  Only the values read and written may differ.
+3. **Proving it goes on.**  Take every value as changing by the same amount
+   from period to period (``B - A``, modulo 2**32).  Each bytecode whose
+   values differ must be one whose effect keeps that form, and it tells for
+   how many periods its outcome stays the same: moves, additions,
+   subtractions and negation keep it for ever (so do ``x & mask``, ``x // c``
+   and ``x / c`` when ``x`` moves by multiples of the mask's range or of
+   ``c``, the last two while ``x`` keeps its sign); a comparison, a conditional
+   jump, a REPEAT step or a zero test keeps its answer until its operand
+   crosses the boundary (:func:`~spinemu.chip.pasm_affine.first_change`);
+   WAITCNT must wait as long every time (its target moves by ``P``); CNT
+   reads must move by ``P``.  Anything else that sees a changing value (a
+   multiplication, a division, an index, a pin write, a lock) ends the
+   attempt.  A hub location first read in the period must change by what the
+   period wrote to it, and nothing may read it at another size.  By induction
+   every later period ``k`` is period A with every value moved by ``k`` times
+   its change, for every ``k`` below the bound ``K`` of all the answers.
+4. **Skipping.**  At the end of B (period 2 starts), periods 2 .. ``K - 1``
+   are applied at once: every hub location the period writes moves by
+   ``(K - 2)`` times its change, every cog's time by ``(K - 2) * P``, the pin
+   changes of B are repeated at their times, and statistics count the skipped
+   bytecodes as executed.  The chip then runs on normally; the period that
+   changes an answer runs through the interpreter as usual.
+
+A failed attempt costs its recording (real execution, only slower, some 30
+times): recordings are capped (:data:`BUDGET_BYTECODES`,
+:data:`BUDGET_INTERVAL`, :data:`ALLOWANCE`), and after one that found nothing
+worth skipping the chip must be calm for :data:`CALM` looks again.
+``Chip(steady_skip=False)`` turns this off (the old/new comparison in the
+tests).
+"""
+from __future__ import annotations
+
+from ..bytecode import TABLE
+from . import mathops
+from .cog import RUNNING, STOPPED
+from .control import Halted
+from .fastforward import _TrackingChip, cog_state
+from .pasm_affine import first_change as _first_change
+
+__all__ = ["SteadySkip", "Reject", "analyse_periods", "LOOK_EVERY"]
+
+N = 1 << 32
+M = N - 1
+SB = 1 << 31
+INFINITE = 1 << 62
+
+#: cycles between two looks (the scheduler's progress hook), plus a part of a million that changes
+#: from look to look, so that the looks do not keep meeting a periodic program at one point of its period
+LOOK_EVERY = 10_000_000
+#: looks in a row that must find the chip calm (every cog mostly waiting) before a recording
+CALM = 3
+#: cycles of normal running after a recording that found nothing worth it (and CALM looks again)
+AFTER_FAILURE = 1 << 24
+#: recordings may take this many bytecodes, and one per RATIO the chip ran (a recorded bytecode costs
+#: some 30 run normally: this keeps looks that find nothing below some 15 % of the run's time)
+ALLOWANCE, RATIO = 4096, 200
+#: bytecodes and anchor visits one recording may take at most
+BUDGET_BYTECODES = 4096
+BUDGET_HITS = 192
+#: ... and between two visits of the anchor (more: a cog has left the steady state for a busy loop)
+BUDGET_INTERVAL = 512
+#: cycles per bytecode since the last look above which a cog counts as mostly waiting
+_SLEEPY = 320
+#: a skip must save at least this many periods
+MIN_SKIP = 2
+#: a skip that saves fewer than this many bytecodes per bytecode recorded makes the next look come later
+PAYOFF = 20
+
+_STEADY, _BUDGET, _LOOK = "steady state found", "steady: recording budget spent", "steady: look"
+
+_NAMES = [e.handler for e in TABLE]
+_WAITCNT = _NAMES.index("op_waitcnt")
+#: bytecodes a period may not contain at all (their effects are not in the hub log)
+_FORBIDDEN = frozenset({"op_run", "op_waitpeq", "op_waitpne", "op_clkset", "op_cogstop", "op_lockret",
+                        "op_waitvid", "op_coginit_result", "op_coginit", "op_locknew_result",
+                        "op_locknew", "op_lockset_result", "op_lockclr_result", "op_lockset",
+                        "op_lockclr", "op_unknown"})
+#: bytecodes looked at even when no value they touch changes (they read the time or registers)
+_TIMED = frozenset({"op_waitcnt", "op_push_spr", "op_pop_spr", "op_using_spr", "op_reg", "op_reg_bit",
+                    "op_reg_range"})
+_MOVES = frozenset({"op_frame_result", "op_frame", "op_frame_result_trap", "op_frame_trap", "op_jmp",
+                    "op_call", "op_call_obj", "op_call_obj_x", "op_pop", "op_abort", "op_abort_value",
+                    "op_return", "op_return_value", "op_push_mask", "op_push_imm1", "op_push_imm2",
+                    "op_push_imm3", "op_push_imm4", "op_push_neg1", "op_push_0", "op_push_1"})
+_AFFINE_BINARY = (mathops.add, mathops.sub)
+_AFFINE_UNARY = (mathops.neg, mathops.bit_not)
+_COMPARE = {mathops.cmp_lt: "lt", mathops.cmp_gt: "gt", mathops.cmp_le: "le", mathops.cmp_ge: "ge",
+            mathops.cmp_eq: "eq", mathops.cmp_ne: "ne"}
+
+
+class Reject(Exception):
+    """The recorded periods do not prove that the chip goes on in the same way."""
+
+
+def _changes(a: int, step: int, lo: int, hi: int) -> int:
+    """Periods (from A) for which ``(a + step*k) mod 2**32`` stays in or out of ``[lo, hi)``."""
+    lo, hi = max(lo, 0), min(hi, N)
+    if lo >= hi or (lo == 0 and hi == N) or not step & M:
+        return INFINITE
+    return _first_change(a & M, step, lo, hi)
+
+
+def _zero_test(v: int, d: int) -> int:
+    return _changes(v, d, 0, 1)
+
+
+def _signed_range(v: int, d: int, lo: int, hi: int) -> int:
+    """Periods for which ``signed(v)`` stays in or out of ``[lo, hi]`` (bounds any integers)."""
+    return _changes((v + SB) & M, d, lo + SB, hi + SB + 1)
+
+
+def _compare(kind: str, x, y) -> int:
+    """Periods for which a signed comparison ``x <kind> y`` keeps its answer: ``x``, ``y`` are
+    ``(value in A, change)``."""
+    (xa, dx), (ya, dy) = x, y
+    if dx and dy:
+        if kind in ("eq", "ne") and dx == dy:
+            return INFINITE
+        raise Reject("a comparison of two changing values")
+    if kind in ("eq", "ne"):
+        v, d, c = (xa, dx, ya) if dx else (ya, dy, xa)
+        return _changes(v, d, c, c + 1)
+    sy = ya - N if ya & SB else ya
+    sx = xa - N if xa & SB else xa
+    if dx:      # x changes, y fixed: x's side of y
+        lo, hi = {"lt": (-SB, sy - 1), "le": (-SB, sy), "gt": (sy + 1, SB), "ge": (sy, SB)}[kind]
+        return _signed_range(xa, dx, lo, hi)
+    lo, hi = {"lt": (sx + 1, SB), "le": (sx, SB), "gt": (-SB, sx - 1), "ge": (-SB, sx)}[kind]
+    return _signed_range(ya, dy, lo, hi)
+
+
+# ---------------------------------------------------------------------------------------- rules
+# A rule gets the bytecode (chip, op, pc, sp at its start), its reads and writes as
+# [shift, index, value in A, value in B, change mod 2**32] and P; it returns the periods for which
+# the bytecode keeps doing the same (INFINITE: for ever) or raises Reject.
+
+def _narrow(reads) -> int:
+    """A byte or word read whose value changes is a long on the stack only while it does not wrap."""
+    k = INFINITE
+    for s, _, va, _, d in reads:
+        if d and s < 2:
+            k = min(k, _changes(va, d, 0, 1 << (8 << s)))
+    return k
+
+
+def _fixed(entries, what: str) -> None:
+    for e in entries:
+        if e[4]:
+            raise Reject(f"a changing value used as {what}")
+
+
+def _moved(reads, writes) -> None:
+    """Every changing value written is a value read (truncated to the written size)."""
+    for s, _, wa, wb, d in writes:
+        if not d:
+            continue
+        m = (1 << (8 << s)) - 1
+        if not any((ra & m, rb & m) == (wa, wb) for _, _, ra, rb, rd in reads if rd):
+            raise Reject("a changing value computed by a bytecode that only moves values")
+
+
+def _rule_move(chip, op, pc, sp, reads, writes, P) -> int:
+    _moved(reads, writes)
+    return _narrow(reads)
+
+
+def _mem_fields(chip, op, pc):
+    """``(address reads, access)`` of a VAR/LOC or memory bytecode at ``pc``."""
+    if _NAMES[op] == "op_var_long":
+        return 0, op & 3
+    base, indexed = (op >> 2) & 3, 1 if op & 0x10 else 0
+    if base:
+        n = (2 if chip.mem[(pc + 1) & 0xFFFF] & 0x80 else 1) + indexed
+    else:
+        n = 1 + indexed
+    return n, op & 3
+
+
+def _rule_memory(chip, op, pc, sp, reads, writes, P) -> int:
+    n, access = _mem_fields(chip, op, pc)
+    _fixed(reads[:n], "an address or index")
+    if access != 2:
+        _moved(reads[n:], writes)
+        return _narrow(reads[n:])
+    # an update: [assignment operator byte] [the variable] [operands of the operator]
+    if len(reads) < n + 2 or not writes:
+        raise Reject("an update not logged as expected")
+    aop_entry, v, rest = reads[n], reads[n + 1], reads[n + 2:]
+    _fixed([aop_entry], "an assignment operator")
+    b = aop_entry[2] & 0x7F
+    k = _narrow([v])
+    if b == 0:                                      # WRITE: a move from the stack
+        _moved(reads[n + 2:] + [v], writes)
+        return min(k, _narrow(rest))
+    if 0x20 <= b < 0x40 and not b & 1 or b in (0x18, 0x1C):
+        _fixed(rest, "an update operand")           # ++ / -- (pre, post, sized), ~ / ~~
+        return k
+    if b & 0x40 and not b & 0x20:
+        f = b & 0x1F
+        fn = mathops.BINARY[f] if mathops.UNARY[f] is None else mathops.UNARY[f]
+        if fn not in _AFFINE_BINARY and fn not in _AFFINE_UNARY:
+            raise Reject("a changing value in an update operator that does not add or subtract")
+        return min(k, _narrow(rest))
+    if b in (0x02, 0x06):                           # REPEAT var FROM .. TO .. [STEP]: its step
+        stack = [e for e in rest if e[0] == 2]      # read as: to (top), from, [step]
+        _fixed(rest, "a REPEAT bound or step")
+        if len(stack) < (3 if b == 0x06 else 2):
+            raise Reject("a REPEAT step not logged as expected")
+        to, frm = stack[0][2], stack[1][2]
+        to, frm = (to - N if to & SB else to), (frm - N if frm & SB else frm)
+        step = 1
+        if b == 0x06:
+            step = stack[2][2]
+            step = step - N if step & SB else step
+        lo, hi = (frm - step, to - step) if frm <= to else (to + step, frm + step)
+        return min(k, _signed_range(v[2], v[4], lo, hi))
+    raise Reject("a changing value in an update operator that does not keep its form")
+
+
+def _rule_math(chip, op, pc, sp, reads, writes, P) -> int:
+    f = op & 0x1F
+    u = mathops.UNARY[f]
+    fn = mathops.BINARY[f]
+    if len(set(chip.timing._math[f])) != 1 and not (fn in (mathops.div, mathops.mod) and not reads[1][4]):
+        raise Reject("a changing value in an operator whose time depends on it")   # (DIV/MOD: the divisor)
+    if u is not None:
+        if u in _AFFINE_UNARY:
+            return INFINITE
+        if u is mathops.log_not:
+            return _zero_test(reads[0][2], reads[0][4])
+        raise Reject("a changing value in an operator that does not keep its form")
+    if fn in _AFFINE_BINARY:
+        return INFINITE
+    x, y = reads[0], reads[1]
+    if fn is mathops.bit_and:           # x & mask: bits below the mask's top stay if x moves by multiples
+        v, m = (y, x) if x[4] == 0 else (x, y)
+        if m[4] or v[4] % (1 << m[2].bit_length()):
+            raise Reject("a changing value masked")
+        return INFINITE
+    if fn is mathops.div or fn is mathops.mod:
+        c = y[2]                        # x / c, x // c: x moving by multiples of c (the sign kept)
+        d = x[4] - N if x[4] & SB else x[4]
+        if y[4] or not 0 < c < SB or d % c:
+            raise Reject("a changing value divided")
+        return _changes(x[2], x[4], 0, SB)
+    kind = _COMPARE.get(fn)
+    if kind is not None:
+        return _compare(kind, (x[2], x[4]), (y[2], y[4]))
+    if fn is mathops.log_and or fn is mathops.log_or:
+        return min(_zero_test(x[2], x[4]), _zero_test(y[2], y[4]))
+    raise Reject("a changing value in an operator that does not keep its form")
+
+
+def _rule_jump(chip, op, pc, sp, reads, writes, P) -> int:
+    code = [e for e in reads if e[0] == 0]
+    _fixed(code, "a jump offset")
+    v = [e for e in reads if e[0] == 2]
+    if len(v) != 1:
+        raise Reject("a jump not logged as expected")
+    s, i, va, vb, d = v[0]
+    if _NAMES[op] == "op_djnz":
+        return _changes(va, d, 1, 2)
+    return _zero_test(va, d)
+
+
+def _rule_waitcnt(chip, op, pc, sp, reads, writes, P) -> int:
+    if len(reads) != 1 or reads[0][4] != P & M:
+        raise Reject("a WAITCNT whose wait changes")
+    return INFINITE
+
+
+def _register(chip, op, pc, reads):
+    """``(register, access)`` of a register bytecode (access 0 read, 1 write, 2 update)."""
+    name = _NAMES[op]
+    if name in ("op_push_spr", "op_pop_spr", "op_using_spr"):
+        idx = [e for e in reads if e[0] == 2]
+        if not idx:
+            raise Reject("a register bytecode not logged as expected")
+        _fixed(idx[:1], "a register number")
+        return 0x1F0 + (idx[0][2] & 0xF), {"op_push_spr": 0, "op_pop_spr": 1, "op_using_spr": 2}[name]
+    b = chip.mem[(pc + 1) & 0xFFFF]
+    return 0x1E0 + (b & 0x1F), (b >> 5) & 3
+
+
+def _rule_register(chip, op, pc, sp, reads, writes, P) -> int:
+    r, access = _register(chip, op, pc, reads)
+    if access and r >= 0x1F8:
+        raise Reject("a counter or video register written")
+    if r == 0x1F1:                                  # CNT: a full read moves by P, nothing else is followed
+        if access or _NAMES[op] not in ("op_push_spr", "op_reg") or len(writes) != 1:
+            raise Reject("CNT used other than read whole")
+        _fixed(reads[1:] if _NAMES[op] == "op_push_spr" else reads, "a CNT operand")
+        if writes[0][4] != P & M:
+            raise Reject("a CNT read that does not move with the period")
+        return INFINITE
+    _fixed(reads, "a register value")
+    _fixed(writes, "a register value")
+    return INFINITE
+
+
+_RULES = {"op_var_long": _rule_memory, "op_mem": _rule_memory, "op_math": _rule_math,
+          "op_jz": _rule_jump, "op_jnz": _rule_jump, "op_tjz": _rule_jump, "op_djnz": _rule_jump,
+          "op_waitcnt": _rule_waitcnt, "op_push_spr": _rule_register, "op_pop_spr": _rule_register,
+          "op_using_spr": _rule_register, "op_reg": _rule_register, "op_reg_bit": _rule_register,
+          "op_reg_range": _rule_register}
+for _name in _MOVES:
+    _RULES[_name] = _rule_move
+del _name
+
+
+def analyse_periods(chip, rows_a, rows_b, log, P: int):
+    """Check two recorded periods (see the module docstring); returns ``(K, writes)``.
+
+    ``rows_a``, ``rows_b``: per bytecode ``(cog, pc, op, t, sp, log start, log end)``.
+    ``K``: periods from A on that provably repeat A with every value moved.
+    ``writes``: ``{(shift, index): (value at the end of B, change per period)}``.
+    Raises :class:`Reject` when they prove nothing.
+    """
+    K = INFINITE
+    first: dict = {}            # (shift, index) -> change of its first access, and whether a read
+    last: dict = {}             # (shift, index) -> (value written last in B, change)
+    changing: set = set()
+    for ra, rb in zip(rows_a, rows_b):
+        op = ra[2]
+        name = _NAMES[op]
+        if name in _FORBIDDEN:
+            raise Reject(f"the period contains {name[3:]}")
+        reads, writes = [], []
+        varies = False
+        for x, y in zip(log[ra[5]:ra[6]], log[rb[5]:rb[6]]):
+            wr, s, i = x[0], x[1], x[2]
+            if y[2] != i or y[1] != s or y[0] != wr:
+                raise Reject("the periods access different addresses")
+            va, vb = (x[4], y[4]) if wr else (x[3], y[3])
+            d = (vb - va) & M
+            key = (s, i)
+            if d:
+                varies = True
+                changing.add(key)
+            e = (s, i, va, vb, d)
+            if wr:
+                writes.append(e)
+                last[key] = (vb, (vb - va) & ((1 << (8 << s)) - 1))
+            else:
+                reads.append(e)
+            if key not in first:
+                first[key] = (not wr, d & ((1 << (8 << s)) - 1))
+        if varies or name in _TIMED:
+            rule = _RULES.get(name)
+            if rule is None:
+                raise Reject(f"a changing value in {name[3:]}")
+            K = min(K, rule(chip, op, ra[1], ra[4], reads, writes, P))
+            if K <= MIN_SKIP:
+                raise Reject("an answer changes at once")
+    # a location read first must change as the period writes it; one only read must not change
+    for key, (was_read, d) in first.items():
+        if was_read:
+            w = last.get(key)
+            if (w[1] if w is not None else 0) != d:
+                raise Reject("a value read does not change as the period writes it")
+    # a changing location is accessed at one size only
+    longs: dict = {}
+    for s, i in first:
+        longs.setdefault((i << s) >> 2, set()).add((s, i))
+    for keys in longs.values():
+        if len(keys) > 1 and keys & changing:
+            raise Reject("a changing value accessed at two sizes")
+    return K, last
+
+
+class _LoggedView:
+    """A hub view that logs every access as the busy-loop learner's views do (fastforward.py), without
+    their checks for cogs running ahead: none runs ahead while a period is recorded."""
+
+    __slots__ = ("view", "shift", "log")
+
+    def __init__(self, view, shift, log):
+        self.view, self.shift, self.log = view, shift, log
+
+    def __getitem__(self, i):
+        v = self.view[i]
+        if i.__class__ is slice:
+            for k in range(*i.indices(len(self.view))):
+                self.log.append((0, self.shift, k, self.view[k], None))
+        else:
+            self.log.append((0, self.shift, i, v, None))
+        return v
+
+    def __setitem__(self, i, v):
+        if i.__class__ is slice:
+            raise Reject("a slice written")             # (the handlers write single elements)
+        self.log.append((1, self.shift, i, self.view[i], v))
+        self.view[i] = v
+
+    def __len__(self):
+        return len(self.view)
+
+
+class _RecordingChip(_TrackingChip):
+    """The chip as the recording handlers see it: hub accesses and deferred write-backs are logged."""
+
+    def __init__(self, chip, log):
+        object.__setattr__(self, "_chip", chip)
+        object.__setattr__(self, "mem", _LoggedView(chip.mem, 0, log))
+        object.__setattr__(self, "mem_words", _LoggedView(chip.mem_words, 1, log))
+        object.__setattr__(self, "mem_longs", _LoggedView(chip.mem_longs, 2, log))
+        object.__setattr__(self, "registers", chip.registers)
+
+    def defer_write(self, writer, size, hub_addr, value, t, key, preempt=True):
+        self.mem_longs.log.append((1, size, hub_addr >> size, None, value))
+        self._chip.defer_write(writer, size, hub_addr, value, t, key, preempt)
+
+
+class _Recorder:
+    """The probe (Scheduler._run_spin_probed) that records bytecodes and finds the period."""
+
+    def __init__(self, steady, log, limit: int):
+        self.steady, self.log, self.limit = steady, log, limit
+        self.rows: list = []
+        self.hits: list = []        # per anchor visit: (row index, t, snapshot, pin events so far)
+        self.sigs: list = []        # per anchor interval: its structure
+        self.anchor = None
+        self.tried: set = set()
+        self.by_snap: dict = {}     # cog states -> the visits (indices into hits) in them
+
+    def before(self, chip, c):
+        if self.anchor is None:
+            self.anchor = (c.id, c.pc)
+        elif c.id == self.anchor[0] and c.pc == self.anchor[1]:
+            self._hit(chip, c)
+        rows = len(self.rows)
+        if rows >= BUDGET_BYTECODES or len(self.hits) >= BUDGET_HITS \
+                or rows - (self.hits[-1][0] if self.hits else 0) > BUDGET_INTERVAL:
+            raise Halted(_BUDGET)
+        self.rows.append([c.id, c.pc, chip.mem[c.pc], c.t, c.sp, len(self.log), 0])
+
+    def after(self, chip, c, pc, t):
+        self.rows[-1][6] = len(self.log)
+
+    def _hit(self, chip, c):
+        rows, hits = self.rows, self.hits
+        t = c.t
+        snap = _snapshot(chip, t)
+        if hits:
+            start, t0 = hits[-1][0], hits[-1][1]
+            self.sigs.append(tuple((r[0], r[1], r[2], r[3] - t0, r[6] - r[5]) for r in rows[start:]))
+        hits.append((len(rows), t, snap, len(chip.pin_events)))
+        j = len(hits) - 1
+        if snap is None or j < 2:
+            return
+        same = self.by_snap.setdefault(snap, set())    # the earlier visits in this state
+        same.add(j)
+        sigs = self.sigs
+        tried = self.tried
+        for n in range(1, j // 2 + 1):
+            if n in tried or j - n not in same or j - 2 * n not in same:
+                continue
+            P = t - hits[j - n][1]
+            if P != hits[j - n][1] - hits[j - 2 * n][1] or P % 16 or P <= 0:
+                continue
+            if sigs[j - n:j] != sigs[j - 2 * n:j - n]:
+                continue
+            if self.steady.try_skip(chip, self, j, n, P):
+                raise Halted(_STEADY)
+            tried.add(n)            # (once per length: a failed proof costs more than a missed skip)
+
+
+def _snapshot(chip, t: int):
+    """Every cog's state (times relative to ``t``), or None where no period may start."""
+    if chip._pend or chip._ahead:
+        return None
+    out = []
+    for k in chip.cogs:
+        if k.state == STOPPED:
+            out.append((STOPPED, k.dira, k.outa))
+        elif k.state != RUNNING or k.engine.__class__ is not str:
+            return None
+        else:
+            out.append((cog_state(k), k.outb, k.dirb, k.t - t))
+    wlog = chip.warning_log
+    return tuple(out), tuple(chip.locks), wlog.total if wlog is not None else 0
+
+
+class SteadySkip:
+    """Looks for steady states in a chip's run and skips their periods (the module docstring)."""
+
+    def __init__(self, chip):
+        self.chip = chip
+        self.next_look = 0
+        self.calm = 0               # looks in a row that found the chip calm
+        self.recorded = 0           # bytecodes recorded so far
+        self.looks = 0
+        self._seen = [(0, 0)] * 8     # per cog: bytecodes and cycle at the last look
+        self.handlers = None
+        self.log: list = []
+        self.periods = 0            # periods skipped
+        self.skips = 0
+        self.attempts = 0
+        self.saved = 0              # bytecodes the latest skip saved
+
+    def eligible(self) -> bool:
+        chip = self.chip
+        if (chip.probe is not None or chip.recorder is not None or chip._handlers_wrapped or chip._parked
+                or chip._pin_waiters or chip._pend or chip.counters_on or chip.pin_listeners
+                or chip._preempt or chip._halt_reason is not None):
+            return False
+        checks = chip.checks
+        for f in chip.pin_hooks:
+            if checks is None or f != checks.on_pins:
+                return False
+        for f in chip.write_hooks:
+            if checks is None or f != checks.on_watched_write:
+                return False
+        if chip.inputs.next_change(chip.now) is not None:
+            return False
+        # every running cog mostly waiting since the last look: a steady state paced by the clock
+        # (one with a busy loop in it would cost its recording more than a skip saves)
+        now, seen = chip.now, self._seen
+        self._seen = [(c.bytecodes, now) for c in chip.cogs]
+        running = False
+        for c in chip.cogs:
+            if c.state == STOPPED:
+                continue
+            if c.state != RUNNING or c.engine.__class__ is not str:
+                return False
+            running = True
+            b0, t0 = seen[c.id]
+            if now - t0 < _SLEEPY * (c.bytecodes - b0 + 1):
+                return False
+        return running
+
+    def advance(self, limit: int, progress) -> str:
+        """``Chip._schedule(limit, progress)``, looking for steady states on the way.
+
+        The scheduler calls its progress hook between two cogs' turns every
+        ten million cycles; there, when the chip may be in a steady state
+        (:meth:`eligible`), the hook stops the scheduler for an attempt.
+        """
+        chip = self.chip
+
+        def look(t: int) -> None:
+            if progress is not None:
+                progress(t)
+            self.looks += 1             # the next look a varying fraction of a million cycles later
+            chip.progress_every = LOOK_EVERY + (self.looks * 618_034) % 1_000_000
+            if not self.eligible():
+                self.calm = 0
+                return
+            self.calm += 1              # a state that has lasted a while is likely to last on
+            if self.calm >= CALM and t >= self.next_look \
+                    and self.recorded <= ALLOWANCE + sum(c.bytecodes for c in chip.cogs) // RATIO:
+                raise Halted(_LOOK)
+
+        while True:
+            chip._cogs_changed = True           # (each call of the scheduler lists the cogs anew)
+            try:
+                return chip._schedule(limit, look)
+            except Halted as h:
+                if h.reason != _LOOK:
+                    raise
+            reason = self._attempt(limit)
+            if reason is not None:
+                return reason
+
+    def _attempt(self, limit: int):
+        """Record until a period is found and skipped or the budget is spent; a run's end reason
+        if the run ended meanwhile, else None."""
+        chip = self.chip
+        self.attempts += 1
+        for c in list(chip._ahead):         # a cog that ran ahead (ahead.py) goes back to the present
+            chip._rollback(c, chip.now, 8)
+        if self.handlers is None:
+            from .spin import build_handlers
+            self.handlers = build_handlers(_RecordingChip(chip, self.log), chip.timing)
+        log = self.log
+        log.clear()
+        rec = _Recorder(self, log, limit)
+        saved = list(chip.handlers)
+        real = chip._handlers
+        chip.handlers[:] = self.handlers
+        chip._handlers = self.handlers
+        chip.probe = rec
+        chip._cogs_changed = True
+        try:
+            try:
+                reason = chip._schedule(limit, None)
+            except Halted as h:
+                reason = h.reason
+        finally:
+            chip.probe = None
+            chip._handlers = real
+            chip.handlers[:] = saved
+            chip._cogs_changed = True
+            log.clear()
+        self.recorded += len(rec.rows)
+        if reason == _STEADY and self.saved >= PAYOFF * len(rec.rows):
+            self.next_look = chip.now
+            self.calm = 0               # (it ended where an answer changes: the state changes there)
+            return None
+        if reason in (_STEADY, _BUDGET):        # nothing found, or too little to pay for the recording
+            self.next_look = chip.now + AFTER_FAILURE
+            self.calm = 0
+            return None
+        return reason
+
+    def try_skip(self, chip, rec: _Recorder, j: int, n: int, P: int) -> bool:
+        """Periods A = anchor intervals [j-2n, j-n), B = [j-n, j) qualify: skip if they prove enough."""
+        hits, rows = rec.hits, rec.rows
+        a0, a1, b1 = hits[j - 2 * n][0], hits[j - n][0], hits[j][0]
+        ev = chip.pin_events
+        pa, pb, pc = hits[j - 2 * n][3], hits[j - n][3], hits[j][3]
+        ta, tb = hits[j - 2 * n][1], hits[j - n][1]
+        events_a = [(e[0] - ta,) + e[2:] for e in ev[pa:pb]]
+        events_b = [(e[0] - tb,) + e[2:] for e in ev[pb:pc]]
+        if events_a != events_b:
+            return False
+        try:
+            K, writes = analyse_periods(chip, rows[a0:a1], rows[a1:b1], rec.log, P)
+        except Reject:
+            return False
+        t_now = hits[j][1]
+        room = (chip.run_limit - t_now) // P - 2 if chip.run_limit < INFINITE else INFINITE
+        skip = min(K - 2, room)
+        if skip < MIN_SKIP:
+            return False
+        self._apply(chip, skip, P, writes, rows[a1:b1], ev[pb:pc])
+        return True
+
+    def _apply(self, chip, m: int, P: int, writes, rows_b, events_b) -> None:
+        """Advance the chip by ``m`` periods of ``P`` cycles (it is at the end of period B)."""
+        views = (chip.mem, chip.mem_words, chip.mem_longs)
+        for (s, i), (v, d) in writes.items():
+            if d:
+                views[s][i] = (v + m * d) & ((1 << (8 << s)) - 1)
+        per_cog = [0] * 8
+        for r in rows_b:
+            per_cog[r[0]] += 1
+        for c in chip.cogs:
+            if c.state == RUNNING:
+                c.t += m * P
+                c.bytecodes += m * per_cog[c.id]
+        for k in range(1, m + 1):               # period B's pin changes, a period later each time
+            off = k * P
+            for e in events_b:
+                chip._seq += 1
+                chip.pin_events.append((e[0] + off, chip._seq) + e[2:])
+        for e in events_b:                  # the cogs' latest pin changes, as other cogs see them
+            c = chip.cogs[e[2]]
+            c.pin_hist.append((e[0] + m * P, e[3], e[4], e[5]))
+            if len(c.pin_hist) > 8:
+                del c.pin_hist[:4]
+        chip.now += m * P
+        self.periods += m
+        self.skips += 1
+        self.saved = m * len(rows_b)
+        chip._ff_skipped += self.saved

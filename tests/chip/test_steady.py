@@ -1,0 +1,136 @@
+"""The steady-state skip (spinemu/chip/steady.py) changes nothing: the same runs with and without it.
+
+Every comparison runs a program with ``steady_skip=False`` (the reference)
+and with ``steady_skip=True`` and requires everything a run produces to be
+identical: pin trace, hub RAM, end cycle and reason, bytecodes per cog, cog
+events.  The runs must also really skip, or the comparison proves nothing.
+"""
+from __future__ import annotations
+
+import os
+import random
+
+import pytest
+
+from spinemu.chip import Chip
+from spinemu.chip.pasm_affine import N
+from spinemu.chip.steady import INFINITE, Reject, _compare, _signed_range
+from spinemu.compiler.program import compile_source
+
+from chip_helpers import ARTICLE, read_bytes
+from steady_programs import program
+
+M = 0xFFFFFFFF
+
+
+def outcome(image: bytes, skip: bool, cycles: int, **kw):
+    chip = Chip(image, steady_skip=skip, **kw)
+    r = chip.run(max_cycles=cycles)
+    return (r.trace.changes, r.hub, r.end_cycle, r.reason, r.stats["bytecodes_per_cog"], r.cog_events), chip
+
+
+def assert_same(image: bytes, cycles: int, **kw):
+    want, _ = outcome(image, False, cycles, **kw)
+    got, chip = outcome(image, True, cycles, **kw)
+    assert got == want
+    return chip
+
+
+BLINK = """CON
+  _clkmode = xtal1 + pll16x
+  _xinfreq = 5_000_000
+VAR
+  long stack[32], count
+PUB main | t
+  cognew(pwm, @stack)
+  dira[0]~~
+  t := cnt
+  repeat 3_000
+    !outa[0]
+    count++
+    waitcnt(t += clkfreq / 1000)
+PRI pwm | t, i
+  dira[1]~~
+  t := cnt
+  repeat
+    repeat i from 0 to 9
+      outa[1] := i < 3
+      waitcnt(t += 8000)
+"""
+
+
+def test_a_blinking_led_and_a_pwm_cog_run_the_same_skipping_their_periods():
+    image = compile_source(BLINK, "blink.spin").binary
+    chip = assert_same(image, 400_000_000)
+    assert chip._steady.periods > 500
+    assert chip.result().stats["steady_periods_skipped"] == chip._steady.periods
+
+
+def test_the_corrected_demo_runs_the_same_skipping_its_free_run():
+    chip = assert_same(read_bytes(os.path.join(ARTICLE, "corrected_stepper_demo.binary")), 1_600_000_000,
+                       compat="spinsim")
+    assert chip._steady.periods > 100
+
+
+def test_the_skip_is_on_by_default_and_off_without_fast_forward():
+    image = compile_source(BLINK, "blink.spin").binary
+    assert Chip(image)._steady is not None
+    assert Chip(image, steady_skip=False)._steady is None
+    assert Chip(image, fast_forward=False)._steady is None
+
+
+@pytest.mark.parametrize("seed", range(0, 16))
+def test_random_clock_paced_programs_run_the_same_with_the_skip(seed):
+    image = compile_source(program(seed), f"steady{seed}.spin").binary
+    assert_same(image, 250_000_000)
+
+
+def test_the_random_programs_do_skip():
+    skipped = 0
+    for seed in range(0, 16):
+        image = compile_source(program(seed), f"steady{seed}.spin").binary
+        _, chip = outcome(image, True, 250_000_000)
+        skipped += chip._steady.skips > 0
+    assert skipped >= 3
+
+
+# ---------------------------------------------------------------------- the proof's arithmetic
+def _signed(v):
+    return v - N if v & 0x80000000 else v
+
+
+def _answers(kind, x, y):
+    a, b = _signed(x & M), _signed(y & M)
+    return {"lt": a < b, "le": a <= b, "gt": a > b, "ge": a >= b, "eq": a == b, "ne": a != b}[kind]
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_a_comparison_keeps_its_answer_for_at_least_the_periods_the_bound_says(seed):
+    rng = random.Random(seed)
+    for _ in range(300):
+        kind = rng.choice(["lt", "le", "gt", "ge", "eq", "ne"])
+        x = rng.choice([rng.randrange(N), rng.randrange(-300, 300) & M, (1 << 31) - 5])
+        y = rng.randrange(-300, 300) & M
+        dx = rng.choice([1, 3, -1, -7, 1 << 20]) & M
+        dy = 0
+        if rng.random() < 0.3:
+            x, y, dx, dy = y, x, dy, dx
+        try:
+            k = _compare(kind, (x, dx), (y, dy))
+        except Reject:
+            continue
+        first = _answers(kind, x, y)                # (a lower bound: the answer may last longer)
+        for p in range(min(k, 400)):
+            assert _answers(kind, x + p * dx, y + p * dy) == first
+
+
+def test_a_repeat_counter_stays_inside_its_bounds_for_the_periods_the_bound_says():
+    for v, d, lo, hi in [(5, 1, 0, 9), ((-3) & M, 1, -5, 5), (100, (-4) & M, 0, 200), (7, 0, 0, 9)]:
+        k = _signed_range(v, d, lo, hi)
+        if d == 0:
+            assert k == INFINITE
+            continue
+        inside = lo <= _signed(v) <= hi
+        for p in range(k):
+            assert (lo <= _signed((v + p * d) & M) <= hi) == inside
+        assert (lo <= _signed((v + k * d) & M) <= hi) != inside     # (steps of 1 or 4 leave exactly)
