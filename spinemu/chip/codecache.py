@@ -17,11 +17,11 @@ most :data:`KEEP` files are kept (the least recently used go first).
 """
 from __future__ import annotations
 
-import hashlib
 import importlib.util
 import marshal
 import os
 import tempfile
+import zlib
 from typing import Optional
 
 __all__ = ["CodeCache", "for_image", "cache_dir", "KEEP"]
@@ -47,7 +47,8 @@ def for_image(image: bytes) -> Optional["CodeCache"]:
     d = cache_dir()
     if d is None:
         return None
-    return CodeCache(os.path.join(d, hashlib.sha256(bytes(image)).hexdigest()[:32] + ".marshal"))
+    data = bytes(image)             # (a name only: entries are found by their source, so a clash just misses)
+    return CodeCache(os.path.join(d, f"{zlib.crc32(data):08x}{zlib.adler32(data):08x}{len(data):x}.marshal"))
 
 
 class CodeCache:

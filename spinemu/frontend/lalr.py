@@ -18,7 +18,6 @@ import os
 import pickle
 import tempfile
 import zlib
-from pathlib import Path
 from typing import Callable, Optional
 
 __all__ = ["Tables", "Parser", "ParseFailure", "grammar_path", "load_tables", "START_RULES"]
@@ -27,18 +26,25 @@ START_RULES = ["con_line", "var_line", "obj_line", "dat_line", "method"]
 _FORMAT = 2  # bump when the pickled layout changes
 
 
-def grammar_path() -> Path:
+def _grammar_file() -> str:
     """Where spin.lark is: installed next to the package, or in the checkout."""
-    pkg = Path(__file__).resolve().parent.parent
-    for cand in (pkg / "grammars" / "spin.lark", pkg.parent / "grammars" / "spin.lark"):
-        if cand.exists():
+    pkg = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
+    for cand in (os.path.join(pkg, "grammars", "spin.lark"),
+                 os.path.join(os.path.dirname(pkg), "grammars", "spin.lark")):
+        if os.path.exists(cand):
             return cand
     raise FileNotFoundError("grammars/spin.lark not found")
 
 
-def _cache_dir() -> Path:
+def grammar_path():
+    """:func:`_grammar_file` as a ``pathlib.Path`` (pathlib is imported only here: it is slow to import)."""
+    from pathlib import Path
+    return Path(_grammar_file())
+
+
+def _cache_dir() -> str:
     base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    return Path(base) / "spinemu"
+    return os.path.join(base, "spinemu")
 
 
 class Tables:
@@ -109,13 +115,14 @@ def _build_tables(text: str) -> Tables:
                   frozenset(terminals))
 
 
-def load_tables(path: Optional[Path] = None, use_cache: bool = True) -> Tables:
-    """The tables for ``path`` (default: spin.lark), from the cache when possible."""
-    path = path or grammar_path()
-    text = path.read_text(encoding="utf-8")
+def load_tables(path=None, use_cache: bool = True) -> Tables:
+    """The tables for ``path`` (a str or Path; default: spin.lark), from the cache when possible."""
+    with open(path or _grammar_file(), encoding="utf-8") as fh:
+        text = fh.read()
     data = f"{_FORMAT}\0{text}".encode()
     key = f"{zlib.crc32(data):08x}{zlib.adler32(data):08x}{len(data):x}"
-    cache = _cache_dir() / f"spin-{key}.lalr.pickle"
+    folder = _cache_dir()
+    cache = os.path.join(folder, f"spin-{key}.lalr.pickle")
     if use_cache:
         try:
             with open(cache, "rb") as fh:
@@ -125,8 +132,8 @@ def load_tables(path: Optional[Path] = None, use_cache: bool = True) -> Tables:
     tables = _build_tables(text)
     if use_cache:
         try:
-            cache.parent.mkdir(parents=True, exist_ok=True)
-            fd, tmp = tempfile.mkstemp(dir=cache.parent, suffix=".tmp")
+            os.makedirs(folder, exist_ok=True)
+            fd, tmp = tempfile.mkstemp(dir=folder, suffix=".tmp")
             with os.fdopen(fd, "wb") as fh:
                 pickle.dump(tables, fh, protocol=pickle.HIGHEST_PROTOCOL)
             os.replace(tmp, cache)
