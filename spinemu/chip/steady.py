@@ -71,6 +71,8 @@ INFINITE = 1 << 62
 #: cycles between two looks (the scheduler's progress hook), plus a part of a million that changes
 #: from look to look, so that the looks do not keep meeting a periodic program at one point of its period
 LOOK_EVERY = 10_000_000
+#: cycles a lone running cog runs between two looks
+LONE_STRETCH = 1 << 25
 #: looks in a row that must find the chip calm (every cog mostly waiting) before a recording
 CALM = 3
 #: cycles of normal running after a recording that found nothing worth it (and CALM looks again)
@@ -341,34 +343,28 @@ def analyse_periods(chip, rows_a, rows_b, log, P: int):
     Raises :class:`Reject` when they prove nothing.
     """
     K = INFINITE
-    first: dict = {}            # (shift, index) -> change of its first access, and whether a read
-    last: dict = {}             # (shift, index) -> (value written last in B, change)
     changing: set = set()
+    # 1. every bytecode whose values differ (most do not: their logs are equal) keeps its form
     for ra, rb in zip(rows_a, rows_b):
         op = ra[2]
         name = _NAMES[op]
         if name in _FORBIDDEN:
             raise Reject(f"the period contains {name[3:]}")
+        la, lb = log[ra[5]:ra[6]], log[rb[5]:rb[6]]
+        if la == lb and name not in _TIMED:
+            continue
         reads, writes = [], []
         varies = False
-        for x, y in zip(log[ra[5]:ra[6]], log[rb[5]:rb[6]]):
+        for x, y in zip(la, lb):
             wr, s, i = x[0], x[1], x[2]
             if y[2] != i or y[1] != s or y[0] != wr:
                 raise Reject("the periods access different addresses")
             va, vb = (x[4], y[4]) if wr else (x[3], y[3])
             d = (vb - va) & M
-            key = (s, i)
             if d:
                 varies = True
-                changing.add(key)
-            e = (s, i, va, vb, d)
-            if wr:
-                writes.append(e)
-                last[key] = (vb, (vb - va) & ((1 << (8 << s)) - 1))
-            else:
-                reads.append(e)
-            if key not in first:
-                first[key] = (not wr, d & ((1 << (8 << s)) - 1))
+                changing.add((s, i))
+            (writes if wr else reads).append((s, i, va, vb, d))
         if varies or name in _TIMED:
             rule = _RULES.get(name)
             if rule is None:
@@ -376,19 +372,35 @@ def analyse_periods(chip, rows_a, rows_b, log, P: int):
             K = min(K, rule(chip, op, ra[1], ra[4], reads, writes, P))
             if K <= MIN_SKIP:
                 raise Reject("an answer changes at once")
-    # a location read first must change as the period writes it; one only read must not change
+    # 2. the hub longs that hold changing values: accessed at one size only; a value read first
+    # changes as the period writes it (one only read does not change)
+    watched = {(i << s) >> 2 for s, i in changing}
+    first: dict = {}            # (shift, index) -> (a read?, its change)
+    last: dict = {}             # (shift, index) -> (value written last in B, change)
+    sizes: dict = {}
+    for ra, rb in zip(rows_a, rows_b):
+        for x, y in zip(log[ra[5]:ra[6]], log[rb[5]:rb[6]]):
+            s, i = x[1], x[2]
+            if (i << s) >> 2 not in watched:
+                continue
+            key = (s, i)
+            sizes.setdefault((i << s) >> 2, set()).add(key)
+            m = (1 << (8 << s)) - 1
+            if x[0]:
+                d = (y[4] - x[4]) & m
+                last[key] = (y[4], d)
+            else:
+                d = (y[3] - x[3]) & m
+            if key not in first:
+                first[key] = (not x[0], d)
+    for keys in sizes.values():
+        if len(keys) > 1:
+            raise Reject("a changing value accessed at two sizes")
     for key, (was_read, d) in first.items():
         if was_read:
             w = last.get(key)
             if (w[1] if w is not None else 0) != d:
                 raise Reject("a value read does not change as the period writes it")
-    # a changing location is accessed at one size only
-    longs: dict = {}
-    for s, i in first:
-        longs.setdefault((i << s) >> 2, set()).add((s, i))
-    for keys in longs.values():
-        if len(keys) > 1 and keys & changing:
-            raise Reject("a changing value accessed at two sizes")
     return K, last
 
 
@@ -436,7 +448,7 @@ class _RecordingChip(_TrackingChip):
 
 
 class _Recorder:
-    """The probe (Scheduler._run_spin_probed) that records bytecodes and finds the period."""
+    """Records bytecodes (SteadySkip._record calls :meth:`before` for each) and finds the period."""
 
     def __init__(self, steady, log, limit: int):
         self.steady, self.log, self.limit = steady, log, limit
@@ -457,9 +469,6 @@ class _Recorder:
                 or rows - (self.hits[-1][0] if self.hits else 0) > BUDGET_INTERVAL:
             raise Halted(_BUDGET)
         self.rows.append([c.id, c.pc, chip.mem[c.pc], c.t, c.sp, len(self.log), 0])
-
-    def after(self, chip, c, pc, t):
-        self.rows[-1][6] = len(self.log)
 
     def _hit(self, chip, c):
         rows, hits = self.rows, self.hits
@@ -539,8 +548,8 @@ class SteadySkip:
             return False
         # every running cog mostly waiting since the last look: a steady state paced by the clock
         # (one with a busy loop in it would cost its recording more than a skip saves)
-        now, seen = chip.now, self._seen
-        self._seen = [(c.bytecodes, now) for c in chip.cogs]
+        seen = self._seen               # (by each cog's own clock: a cog running ahead is past ``now``)
+        self._seen = [(c.bytecodes, c.t) for c in chip.cogs]
         running = False
         for c in chip.cogs:
             if c.state == STOPPED:
@@ -549,7 +558,7 @@ class SteadySkip:
                 return False
             running = True
             b0, t0 = seen[c.id]
-            if now - t0 < _SLEEPY * (c.bytecodes - b0 + 1):
+            if c.bytecodes - b0 > (c.t - t0) // _SLEEPY:
                 return False
         return running
 
@@ -577,8 +586,16 @@ class SteadySkip:
 
         while True:
             chip._cogs_changed = True           # (each call of the scheduler lists the cogs anew)
+            # a lone cog may run ahead to the limit in one turn (ahead.py), past every hook: it runs
+            # in stretches with a look at the end of each
+            lone = sum(c.state != STOPPED for c in chip.cogs) == 1
+            until = min(limit, chip.now + LONE_STRETCH) if lone else limit
             try:
-                return chip._schedule(limit, look)
+                reason = chip._schedule(until, look)
+                if until == limit or reason != "cycle limit":
+                    return reason
+                look(chip.now)
+                continue
             except Halted as h:
                 if h.reason != _LOOK:
                     raise
@@ -603,15 +620,12 @@ class SteadySkip:
         real = chip._handlers
         chip.handlers[:] = self.handlers
         chip._handlers = self.handlers
-        chip.probe = rec
-        chip._cogs_changed = True
         try:
             try:
-                reason = chip._schedule(limit, None)
+                reason = self._record(rec, limit)
             except Halted as h:
                 reason = h.reason
         finally:
-            chip.probe = None
             chip._handlers = real
             chip.handlers[:] = saved
             chip._cogs_changed = True
@@ -626,6 +640,59 @@ class SteadySkip:
             self.calm = 0
             return None
         return reason
+
+    def _record(self, rec: "_Recorder", limit: int):
+        """Run the chip one bytecode at a time in the scheduler's exact order, recording each.
+
+        The scheduler's own loop (Scheduler._schedule) for the states a
+        recording starts from: Spin cogs only, none parked, ahead or waiting
+        on pins, no pin listeners or input changes.  It returns None (the
+        scheduler goes on) as soon as anything else comes up, at the cycle
+        limit, or when every cog has stopped; "reboot" as the scheduler
+        would; a recorder's Halted ends it too.
+        """
+        from .control import RebootRequested
+        chip = self.chip
+        cogs, mem, acc, wide = chip.cogs, chip.mem, chip.access_at, chip.access_wide
+        rows, log = rec.rows, rec.log
+        run = chip._run_spin
+        running: list = []
+        chip._cogs_changed = True
+        chip.run_limit = limit
+        while True:
+            if chip._cogs_changed:
+                chip._cogs_changed = False
+                running = [k for k in cogs if k.state == RUNNING]
+                if chip._pin_waiters or chip._parked or any(k.engine.__class__ is not str for k in running) \
+                        or any(k.running and k.state != RUNNING for k in cogs):
+                    return None
+            c = None
+            ck = 0
+            for k in running:
+                pc = k.pc
+                op = mem[pc]
+                key = k.t + 12
+                key += ((k.hub_phase - key) & 15) + acc[op] + (wide[op] & (mem[(pc + 1) & 0xFFFF] >> 3))
+                if c is None or key < ck:
+                    c, ck = k, key
+            pa = chip._pend_at
+            if pa < limit and (c is None or pa < ck or pa == ck and chip._pend_id < c.id):
+                chip._apply_pending()
+                continue
+            if c is None or ck >= limit:
+                return None
+            chip.now = c.t
+            rec.before(chip, c)
+            try:
+                run(c, ck + 1)
+            except RebootRequested:
+                chip.now = c.t
+                chip._pend.clear()
+                chip._pend_at = 1 << 62
+                return "reboot"
+            if chip._preempt:                   # (a write-back waits: the handlers come back)
+                chip._end_preemption()
+            rows[-1][6] = len(log)
 
     def try_skip(self, chip, rec: _Recorder, j: int, n: int, P: int) -> bool:
         """Periods A = anchor intervals [j-2n, j-n), B = [j-n, j) qualify: skip if they prove enough."""
