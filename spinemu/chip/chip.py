@@ -641,7 +641,8 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
                 "bytecodes_skipped": self._ff_skipped,
                 "blocks_compiled": self._compiler.count if self._compiler is not None else 0,
                 "run_ahead": self.run_ahead, "private_stretches": self._stretches, "rollbacks": self._rollbacks,
-                "steady_periods_skipped": self._steady.periods if self._steady is not None else 0}
+                "steady_periods_skipped": self._steady.periods if self._steady is not None else 0,
+                "steady_bytecodes_skipped": self._steady.skipped if self._steady is not None else 0}
 
 
     def _boot(self) -> None:

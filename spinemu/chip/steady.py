@@ -6,8 +6,8 @@ repeats the same pattern, and every repeat costs the interpreter the same
 work.  This module lets the chip skip such repeats without changing a single
 result (pin trace, hub RAM, end cycle):
 
-1. **Recording.**  When the chip has been calm for a while (three looks in
-   a row of the scheduler's progress hook found every running cog a Spin
+1. **Recording.**  When the chip has been calm for a while (the looks of
+   the scheduler's progress hook over :data:`CALM` cycles found every running cog a Spin
    cog that mostly waits, and no PASM cog, counter output, pin wait, parked
    busy loop, bench part or debugger in the way: :meth:`SteadySkip.eligible`),
    the chip runs on exactly as always, but through the interpreter's own
@@ -48,7 +48,7 @@ result (pin trace, hub RAM, end cycle):
 A failed attempt costs its recording (real execution, only slower, some 30
 times): recordings are capped (:data:`BUDGET_BYTECODES`,
 :data:`BUDGET_INTERVAL`, :data:`ALLOWANCE`), and after one that found nothing
-worth skipping the chip must be calm for :data:`CALM` looks again.
+worth skipping the chip must be calm for :data:`CALM` cycles again.
 ``Chip(steady_skip=False)`` turns this off (the old/new comparison in the
 tests).
 """
@@ -73,8 +73,8 @@ INFINITE = 1 << 62
 LOOK_EVERY = 10_000_000
 #: cycles a lone running cog runs between two looks
 LONE_STRETCH = 1 << 25
-#: looks in a row that must find the chip calm (every cog mostly waiting) before a recording
-CALM = 3
+#: cycles over which every look must find the chip calm (every cog mostly waiting) before a recording
+CALM = 24_000_000
 #: cycles of normal running after a recording that found nothing worth it (and CALM looks again)
 AFTER_FAILURE = 1 << 24
 #: recordings may take this many bytecodes, and one per RATIO the chip ran (a recorded bytecode costs
@@ -448,7 +448,7 @@ class _RecordingChip(_TrackingChip):
 
 
 class _Recorder:
-    """Records bytecodes (SteadySkip._record calls :meth:`before` for each) and finds the period."""
+    """The record of a recording (SteadySkip._record fills it) and the search for the period."""
 
     def __init__(self, steady, log, limit: int):
         self.steady, self.log, self.limit = steady, log, limit
@@ -458,17 +458,6 @@ class _Recorder:
         self.anchor = None
         self.tried: set = set()
         self.by_snap: dict = {}     # cog states -> the visits (indices into hits) in them
-
-    def before(self, chip, c):
-        if self.anchor is None:
-            self.anchor = (c.id, c.pc)
-        elif c.id == self.anchor[0] and c.pc == self.anchor[1]:
-            self._hit(chip, c)
-        rows = len(self.rows)
-        if rows >= BUDGET_BYTECODES or len(self.hits) >= BUDGET_HITS \
-                or rows - (self.hits[-1][0] if self.hits else 0) > BUDGET_INTERVAL:
-            raise Halted(_BUDGET)
-        self.rows.append([c.id, c.pc, chip.mem[c.pc], c.t, c.sp, len(self.log), 0])
 
     def _hit(self, chip, c):
         rows, hits = self.rows, self.hits
@@ -520,7 +509,7 @@ class SteadySkip:
     def __init__(self, chip):
         self.chip = chip
         self.next_look = 0
-        self.calm = 0               # looks in a row that found the chip calm
+        self.calm = None            # since when every look found the chip calm
         self.recorded = 0           # bytecodes recorded so far
         self.looks = 0
         self._seen = [(0, 0)] * 8     # per cog: bytecodes and cycle at the last look
@@ -530,6 +519,8 @@ class SteadySkip:
         self.skips = 0
         self.attempts = 0
         self.saved = 0              # bytecodes the latest skip saved
+        self.skipped = 0            # ... and all skips
+        self._ff_seen = 0           # the busy-loop skipper's count at the last look
 
     def eligible(self) -> bool:
         chip = self.chip
@@ -548,6 +539,9 @@ class SteadySkip:
             return False
         # every running cog mostly waiting since the last look: a steady state paced by the clock
         # (one with a busy loop in it would cost its recording more than a skip saves)
+        if chip._ff_skipped != self._ff_seen:   # a busy loop was skipped since the last look: not calm
+            self._ff_seen = chip._ff_skipped
+            return False
         seen = self._seen               # (by each cog's own clock: a cog running ahead is past ``now``)
         self._seen = [(c.bytecodes, c.t) for c in chip.cogs]
         running = False
@@ -577,10 +571,11 @@ class SteadySkip:
             self.looks += 1             # the next look a varying fraction of a million cycles later
             chip.progress_every = LOOK_EVERY + (self.looks * 618_034) % 1_000_000
             if not self.eligible():
-                self.calm = 0
+                self.calm = None
                 return
-            self.calm += 1              # a state that has lasted a while is likely to last on
-            if self.calm >= CALM and t >= self.next_look \
+            if self.calm is None:
+                self.calm = t
+            if t - self.calm >= CALM and t >= self.next_look \
                     and self.recorded <= ALLOWANCE + sum(c.bytecodes for c in chip.cogs) // RATIO:
                 raise Halted(_LOOK)
 
@@ -633,11 +628,11 @@ class SteadySkip:
         self.recorded += len(rec.rows)
         if reason == _STEADY and self.saved >= PAYOFF * len(rec.rows):
             self.next_look = chip.now
-            self.calm = 0               # (it ended where an answer changes: the state changes there)
+            self.calm = None            # (it ended where an answer changes: the state changes there)
             return None
         if reason in (_STEADY, _BUDGET):        # nothing found, or too little to pay for the recording
             self.next_look = chip.now + AFTER_FAILURE
-            self.calm = 0
+            self.calm = None
             return None
         return reason
 
@@ -651,11 +646,12 @@ class SteadySkip:
         limit, or when every cog has stopped; "reboot" as the scheduler
         would; a recorder's Halted ends it too.
         """
-        from .control import RebootRequested
+        from .control import CogStopped, RebootRequested, Reschedule
         chip = self.chip
         cogs, mem, acc, wide = chip.cogs, chip.mem, chip.access_at, chip.access_wide
-        rows, log = rec.rows, rec.log
-        run = chip._run_spin
+        rows, log, hits = rec.rows, rec.log, rec.hits
+        H = chip.handlers
+        anchor = anchor_pc = None
         running: list = []
         chip._cogs_changed = True
         chip.run_limit = limit
@@ -681,18 +677,50 @@ class SteadySkip:
                 continue
             if c is None or ck >= limit:
                 return None
-            chip.now = c.t
-            rec.before(chip, c)
+            pc = c.pc
+            t = c.t
+            chip.now = t
+            if pc == anchor_pc and c is anchor:
+                rec._hit(chip, c)
+            elif anchor is None:
+                anchor, anchor_pc = c, pc
+                rec.anchor = (c.id, pc)
+            n = len(rows)
+            if n >= BUDGET_BYTECODES or len(hits) >= BUDGET_HITS \
+                    or n - (hits[-1][0] if hits else 0) > BUDGET_INTERVAL:
+                raise Halted(_BUDGET)
+            op = mem[pc]
+            row = [c.id, pc, op, t, c.sp, len(log), 0]
+            rows.append(row)
+            # the bytecode, as Scheduler._run_spin runs it with the limit just past its access
+            tf = t + 12
+            tf += (c.hub_phase - tf) & 15
+            chip.rmw_limit = ck + 1
+            c.pc = pc + 1
             try:
-                run(c, ck + 1)
+                t = tf + H[op](c, op, t)
+            except Reschedule as e:
+                t = tf + e.rest
+            except CogStopped:
+                c.bytecodes += 1
+                row[6] = len(log)
+                continue
             except RebootRequested:
+                c.bytecodes += 1
+                c.t = tf
+                chip._reboot_key = tf + chip.access_offset(pc)
                 chip.now = c.t
                 chip._pend.clear()
                 chip._pend_at = 1 << 62
                 return "reboot"
+            except IndexError:
+                raise chip.fault(c, pc, "stack or address out of hub range") from None
+            c.bytecodes += 1
+            if c.state == RUNNING:
+                c.t = t
             if chip._preempt:                   # (a write-back waits: the handlers come back)
                 chip._end_preemption()
-            rows[-1][6] = len(log)
+            row[6] = len(log)
 
     def try_skip(self, chip, rec: _Recorder, j: int, n: int, P: int) -> bool:
         """Periods A = anchor intervals [j-2n, j-n), B = [j-n, j) qualify: skip if they prove enough."""
@@ -744,4 +772,4 @@ class SteadySkip:
         self.periods += m
         self.skips += 1
         self.saved = m * len(rows_b)
-        chip._ff_skipped += self.saved
+        self.skipped += self.saved
