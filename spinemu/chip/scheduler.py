@@ -72,8 +72,11 @@ class Scheduler:
         """
         cogs = self.cogs
         mem, acc, wide = self.mem, self.access_at, self.access_wide
-        self.run_limit = limit
         next_report = 0
+        self.run_limit = limit
+        # a lone Spin cog's turn ends at the next progress report (it might otherwise last to the
+        # limit, past every report)
+        cap = limit if progress is None else self.now + self.progress_every
         traced = self.recorder is not None
         probed = self.probe is not None
         ff = self.fast_forward and not traced and not probed
@@ -162,6 +165,8 @@ class Scheduler:
                 until = ck2 + 1 if c.id < c2.id else ck2
                 if until > limit:
                     until = limit
+            elif cap < limit and c.engine.__class__ is str:
+                until = cap if cap > ck else ck + 1     # (its time has come: one bytecode, then the report)
             if ext is not None and ext < until:
                 until = ext
             if pa < until:
@@ -191,6 +196,7 @@ class Scheduler:
             if progress is not None and t >= next_report:
                 progress(t)
                 next_report = t + self.progress_every
+                cap = next_report
 
     def _key(self, c: Cog) -> int:
         """When cog ``c``'s next bytecode touches shared state (see timing.access_offsets).

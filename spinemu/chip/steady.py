@@ -71,8 +71,6 @@ INFINITE = 1 << 62
 #: cycles between two looks (the scheduler's progress hook), plus a part of a million that changes
 #: from look to look, so that the looks do not keep meeting a periodic program at one point of its period
 LOOK_EVERY = 10_000_000
-#: cycles a lone running cog runs between two looks
-LONE_STRETCH = 1 << 25
 #: cycles over which every look must find the chip calm (every cog mostly waiting) before a recording
 CALM = 24_000_000
 #: cycles of normal running after a recording that found nothing worth it (and CALM looks again)
@@ -581,16 +579,8 @@ class SteadySkip:
 
         while True:
             chip._cogs_changed = True           # (each call of the scheduler lists the cogs anew)
-            # a lone cog may run ahead to the limit in one turn (ahead.py), past every hook: it runs
-            # in stretches with a look at the end of each
-            lone = sum(c.state != STOPPED for c in chip.cogs) == 1
-            until = min(limit, chip.now + LONE_STRETCH) if lone else limit
             try:
-                reason = chip._schedule(until, look)
-                if until == limit or reason != "cycle limit":
-                    return reason
-                look(chip.now)
-                continue
+                return chip._schedule(limit, look)
             except Halted as h:
                 if h.reason != _LOOK:
                     raise
