@@ -74,8 +74,8 @@ class Scheduler:
         mem, acc, wide = self.mem, self.access_at, self.access_wide
         next_report = 0
         self.run_limit = limit
-        # a lone Spin cog's turn ends at the next progress report (it might otherwise last to the
-        # limit, past every report)
+        # a Spin cog's turn ends at the next progress report (a lone cog's, or one whose partner
+        # sleeps, might otherwise last to the limit, past every report)
         cap = limit if progress is None else self.now + self.progress_every
         traced = self.recorder is not None
         probed = self.probe is not None
@@ -165,7 +165,7 @@ class Scheduler:
                 until = ck2 + 1 if c.id < c2.id else ck2
                 if until > limit:
                     until = limit
-            elif cap < limit and c.engine.__class__ is str:
+            if cap < until and c.engine.__class__ is str:
                 until = cap if cap > ck else ck + 1     # (its time has come: one bytecode, then the report)
             if ext is not None and ext < until:
                 until = ext

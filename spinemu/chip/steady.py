@@ -464,7 +464,7 @@ class _Recorder:
         if hits:
             start, t0 = hits[-1][0], hits[-1][1]
             self.sigs.append(tuple((r[0], r[1], r[2], r[3] - t0, r[6] - r[5]) for r in rows[start:]))
-        hits.append((len(rows), t, snap, len(chip.pin_events)))
+        hits.append((len(rows), t, snap, len(chip.pin_events), _times(chip)))
         j = len(hits) - 1
         if snap is None or j < 2:
             return
@@ -478,9 +478,10 @@ class _Recorder:
             P = t - hits[j - n][1]
             if P != hits[j - n][1] - hits[j - 2 * n][1] or P % 16 or P <= 0:
                 continue
-            if sigs[j - n:j] != sigs[j - 2 * n:j - n]:
+            roles = _roles(hits[j - 2 * n], hits[j - n], hits[j])
+            if roles is None or sigs[j - n:j] != sigs[j - 2 * n:j - n]:
                 continue
-            if self.steady.try_skip(chip, self, j, n, P):
+            if self.steady.try_skip(chip, self, j, n, P, roles):
                 raise Halted(_STEADY)
             tried.add(n)            # (once per length: a failed proof costs more than a missed skip)
 
@@ -496,9 +497,36 @@ def _snapshot(chip, t: int):
         elif k.state != RUNNING or k.engine.__class__ is not str:
             return None
         else:
-            out.append((cog_state(k), k.outb, k.dirb, k.t - t))
+            out.append((cog_state(k), k.outb, k.dirb))
     wlog = chip.warning_log
     return tuple(out), tuple(chip.locks), wlog.total if wlog is not None else 0
+
+
+def _times(chip) -> tuple:
+    """Every running cog's time (None for the others)."""
+    return tuple(k.t if k.state == RUNNING else None for k in chip.cogs)
+
+
+def _roles(h0, h1, h2):
+    """How each cog's time went over three visits of the anchor: ``(moving, asleep)`` cog ids, or None.
+
+    A cog that takes part in the period is at the same time relative to the
+    anchor each time (``moving``: it moves on by ``P`` per period); one that
+    sleeps through both periods (a slow loop's long WAITCNT) is at the same
+    absolute time (``asleep``: it stays where it is, and the skip must end
+    before it wakes).
+    """
+    moving, asleep = [], []
+    for i, (a, b, c) in enumerate(zip(h0[4], h1[4], h2[4])):
+        if a is None:
+            continue
+        if a - h0[1] == b - h1[1] == c - h2[1]:
+            moving.append(i)
+        elif a == b == c:
+            asleep.append(i)
+        else:
+            return None
+    return tuple(moving), tuple(asleep)
 
 
 class SteadySkip:
@@ -517,6 +545,8 @@ class SteadySkip:
         self.skips = 0
         self.attempts = 0
         self.saved = 0              # bytecodes the latest skip saved
+        self.woken = False          # did it end where a cog sleeping through its periods wakes?
+        self.wake_at = INFINITE     # ... and when that cog's turn comes
         self.skipped = 0            # ... and all skips
         self._ff_seen = 0           # the busy-loop skipper's count at the last look
 
@@ -567,7 +597,10 @@ class SteadySkip:
             if progress is not None:
                 progress(t)
             self.looks += 1             # the next look a varying fraction of a million cycles later
-            chip.progress_every = LOOK_EVERY + (self.looks * 618_034) % 1_000_000
+            every = LOOK_EVERY + (self.looks * 618_034) % 1_000_000
+            if self.woken and t < self.wake_at:     # ... or just after a sleeper's turn that ended a skip
+                every = min(every, self.wake_at - t + 100_000)
+            chip.progress_every = every
             if not self.eligible():
                 self.calm = None
                 return
@@ -617,8 +650,11 @@ class SteadySkip:
             log.clear()
         self.recorded += len(rec.rows)
         if reason == _STEADY and self.saved >= PAYOFF * len(rec.rows):
-            self.next_look = chip.now
-            self.calm = None            # (it ended where an answer changes: the state changes there)
+            if self.woken:              # the sleeper's turn comes next, then the same state goes on
+                self.next_look = self.wake_at
+            else:                       # it ended where an answer changes: the state changes there
+                self.next_look = chip.now
+                self.calm = None
             return None
         if reason in (_STEADY, _BUDGET):        # nothing found, or too little to pay for the recording
             self.next_look = chip.now + AFTER_FAILURE
@@ -712,7 +748,7 @@ class SteadySkip:
                 chip._end_preemption()
             row[6] = len(log)
 
-    def try_skip(self, chip, rec: _Recorder, j: int, n: int, P: int) -> bool:
+    def try_skip(self, chip, rec: _Recorder, j: int, n: int, P: int, roles) -> bool:
         """Periods A = anchor intervals [j-2n, j-n), B = [j-n, j) qualify: skip if they prove enough."""
         hits, rows = rec.hits, rec.rows
         a0, a1, b1 = hits[j - 2 * n][0], hits[j - n][0], hits[j][0]
@@ -728,15 +764,23 @@ class SteadySkip:
         except Reject:
             return False
         t_now = hits[j][1]
+        moving, asleep = roles
         room = (chip.run_limit - t_now) // P - 2 if chip.run_limit < INFINITE else INFINITE
-        skip = min(K - 2, room)
-        if skip < MIN_SKIP:
-            return False
-        self._apply(chip, skip, P, writes, rows[a1:b1], ev[pb:pc])
+        wake = INFINITE
+        self.wake_at = INFINITE
+        for i in asleep:                        # the skip ends two periods before a sleeper wakes
+            self.wake_at = min(self.wake_at, chip._key(chip.cogs[i]))
+            wake = min(wake, (self.wake_at - t_now) // P - 2)
+        skip = min(K - 2, room, wake)
+        if skip < MIN_SKIP or skip * (b1 - a1) < PAYOFF * len(rows) and skip < room:
+            return False                        # (too little: a longer period may do better)
+        self.woken = skip == wake               # (the same state goes on after the sleeper's turn)
+        self._apply(chip, skip, P, writes, rows[a1:b1], ev[pb:pc], moving)
         return True
 
-    def _apply(self, chip, m: int, P: int, writes, rows_b, events_b) -> None:
-        """Advance the chip by ``m`` periods of ``P`` cycles (it is at the end of period B)."""
+    def _apply(self, chip, m: int, P: int, writes, rows_b, events_b, moving) -> None:
+        """Advance the chip by ``m`` periods of ``P`` cycles (it is at the end of period B); the cogs
+        ``moving`` take part in the period, the others sleep through it."""
         views = (chip.mem, chip.mem_words, chip.mem_longs)
         for (s, i), (v, d) in writes.items():
             if d:
@@ -744,10 +788,10 @@ class SteadySkip:
         per_cog = [0] * 8
         for r in rows_b:
             per_cog[r[0]] += 1
-        for c in chip.cogs:
-            if c.state == RUNNING:
-                c.t += m * P
-                c.bytecodes += m * per_cog[c.id]
+        for i in moving:
+            c = chip.cogs[i]
+            c.t += m * P
+            c.bytecodes += m * per_cog[i]
         for k in range(1, m + 1):               # period B's pin changes, a period later each time
             off = k * P
             for e in events_b:

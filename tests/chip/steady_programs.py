@@ -7,8 +7,9 @@ statements are the ways such a state changes or breaks: counters that go up
 or down (longs, and bytes and words that wrap), comparisons of them with
 thresholds they cross later, a mod-n step index into a DAT table, pin
 writes, CNT reads, inner REPEAT loops, values passed between cogs through
-hub RAM, operators the skip does not follow (multiplication, shifts) and a
-main loop that ends after a number of rounds.
+hub RAM, operators the skip does not follow (multiplication, shifts), a
+main loop that ends after a number of rounds, and cogs whose loops are much
+slower than the others' (they sleep through many periods of the fast ones).
 """
 from __future__ import annotations
 
@@ -66,7 +67,7 @@ def program(seed: int) -> str:
     rng = random.Random(seed)
     cogs = rng.randrange(1, 5)
     g = _Gen(rng, cogs)
-    periods = [rng.choice([8000, 16000, 40000, 80000, 12_008]) for _ in range(cogs)]
+    periods = [rng.choice([8000, 16000, 40000, 80000, 12_008, 400_000, 2_000_000]) for _ in range(cogs)]
     out = [HEADER, "PUB main | t, a, b, c, i, j\n"]
     for w in range(1, cogs):
         out.append(f"  cognew(worker{w}, @stack[{(w - 1) * 40}])\n")

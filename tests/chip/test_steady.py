@@ -66,6 +66,36 @@ def test_a_blinking_led_and_a_pwm_cog_run_the_same_skipping_their_periods():
     assert chip.result().stats["steady_periods_skipped"] == chip._steady.periods
 
 
+SLOW_AND_FAST = """CON
+  _clkmode = xtal1 + pll16x
+  _xinfreq = 5_000_000
+VAR
+  long stack[32]
+PUB main | t
+  cognew(pwm, @stack)
+  dira[0]~~
+  t := cnt
+  repeat
+    !outa[0]
+    waitcnt(t += clkfreq / 4)
+PRI pwm | t, i
+  dira[1]~~
+  t := cnt
+  repeat
+    repeat i from 0 to 9
+      outa[1] := i < 3
+      waitcnt(t += clkfreq / 10_000)
+"""
+
+
+def test_a_fast_cog_is_skipped_while_a_slow_one_sleeps_and_the_slow_one_still_wakes_on_time():
+    image = compile_source(SLOW_AND_FAST, "slow_and_fast.spin").binary
+    chip = assert_same(image, 400_000_000)
+    steady = chip._steady
+    assert steady.skips >= 10                  # one or two per quarter second of the slow cog
+    assert steady.periods * 80_000 > 200_000_000   # more than half of the run skipped
+
+
 def test_the_corrected_demo_runs_the_same_skipping_its_free_run():
     chip = assert_same(read_bytes(os.path.join(ARTICLE, "corrected_stepper_demo.binary")), 1_600_000_000,
                        compat="spinsim")
