@@ -601,6 +601,8 @@ class SteadySkip:
             if self.woken and t < self.wake_at:     # ... or just after a sleeper's turn that ended a skip
                 every = min(every, self.wake_at - t + 100_000)
             chip.progress_every = every
+            if chip._pend or chip._preempt:     # a write-back on its way: this moment is no good, the
+                return                          # state may still be (the next look will tell)
             if not self.eligible():
                 self.calm = None
                 return
