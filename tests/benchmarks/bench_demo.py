@@ -14,7 +14,9 @@ Prints:
   the team's gap report measures), by wall time and the child's CPU time.
 
 Each figure is the best of ``--repeat`` runs (default 3).  CPU time is the
-steadier figure on a loaded machine.
+steadier figure on a loaded machine.  Run it with the Python of a regular
+install (``pip install .``) to measure that install; from a source tree
+without one it falls back to the tree.
 """
 from __future__ import annotations
 
@@ -27,7 +29,12 @@ import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, ROOT)
+try:                                    # an installed spinemu (``pip install .``: its bytecode is cached)
+    import spinemu  # noqa: F401
+    SOURCE_TREE = False
+except ImportError:                     # else the source tree this script is in
+    sys.path.insert(0, ROOT)
+    SOURCE_TREE = True
 
 from spinemu.chip import Chip  # noqa: E402
 
@@ -51,7 +58,9 @@ def best_of(n, fn):
 
 def end_to_end(n: int):
     """``(wall, child CPU)`` of the fastest of ``n`` CLI runs of the corrected demo."""
-    env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    env = dict(os.environ)
+    if SOURCE_TREE:                     # (with PYTHONDONTWRITEBYTECODE every run compiles spinemu again)
+        env["PYTHONPATH"] = ROOT + os.pathsep + os.environ.get("PYTHONPATH", "")
     best = None
     with tempfile.TemporaryDirectory() as tmp:
         cmd = [sys.executable, "-m", "spinemu", "run", DEMO_SRC, "--cycles", "1600000000",
