@@ -507,7 +507,6 @@ def _run_pbasic(args, out: _Out) -> int:
         session = ConsoleSession(args, out, CLOCK_HZ, live_text=not args.view)
     bench = RunBench(args, out, clock_hz=CLOCK_HZ, pin_count=16, engine="the BASIC Stamp", session=session)
     t0 = time.perf_counter()
-    chip = None
     with session or contextlib.nullcontext(), bench.run_context():
         result = run_file(args.target, seconds=seconds, timing=args.timing or "exact", inputs=bench.spec or None,
                           debug_in=args.debug_in, parts=bench.bench if bench.active else ())
