@@ -87,13 +87,13 @@ BUDGET_INTERVAL = 512
 _SLEEPY = 320
 #: a skip must save at least this many periods
 MIN_SKIP = 2
-#: a skip that saves fewer than this many bytecodes per bytecode recorded makes the next look come later
+#: bytecodes a skip must save per bytecode recorded (else the recording looks on for a longer period,
+#: and one that finds none makes the next look come later)
 PAYOFF = 20
 
 _STEADY, _BUDGET, _LOOK = "steady state found", "steady: recording budget spent", "steady: look"
 
 _NAMES = [e.handler for e in TABLE]
-_WAITCNT = _NAMES.index("op_waitcnt")
 #: bytecodes a period may not contain at all (their effects are not in the hub log)
 _FORBIDDEN = frozenset({"op_run", "op_waitpeq", "op_waitpne", "op_clkset", "op_cogstop", "op_lockret",
                         "op_waitvid", "op_coginit_result", "op_coginit", "op_locknew_result",
