@@ -263,3 +263,18 @@ def test_run_skips_a_steady_state_writes_the_same_trace_and_says_what_it_skipped
     assert "periods of a steady state skipped" in out
     assert skipped.read_text() == plain.read_text()
     assert len(read_log(plain.read_text()).changes) > 5000
+
+
+def test_the_console_command_flushes_its_output_and_keeps_its_exit_status(tmp_path):
+    # the entry point leaves with os._exit: the summary must still be written, the status kept
+    import os
+    import subprocess
+    import sys
+    env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    ok = subprocess.run([sys.executable, "-m", "spinemu", "run", str(SRC / "simple_stepper.spin"),
+                         "--cycles", "8000000", "--no-progress"], capture_output=True, text=True, env=env)
+    assert ok.returncode == 0, ok.stderr
+    assert ok.stdout.splitlines()[0].startswith("simulated ") and "pins" in ok.stdout
+    bad = subprocess.run([sys.executable, "-m", "spinemu", "run", str(tmp_path / "missing.spin")],
+                         capture_output=True, text=True, env=env)
+    assert bad.returncode == 1 and "no such file" in bad.stderr
