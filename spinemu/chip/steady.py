@@ -26,15 +26,16 @@ result (pin trace, hub RAM, end cycle):
    from period to period (``B - A``, modulo 2**32).  Each bytecode whose
    values differ must be one whose effect keeps that form, and it tells for
    how many periods its outcome stays the same: moves, additions,
-   subtractions and negation keep it for ever (so do ``x & mask``, ``x // c``
-   and ``x / c`` when ``x`` moves by multiples of the mask's range or of
-   ``c``, the last two while ``x`` keeps its sign); a comparison, a conditional
+   subtractions and negation keep it for ever (so do ``*`` and ``<<`` by a
+   fixed operand, and ``x & mask``, ``x // c`` and ``x / c`` when ``x``
+   moves by multiples of the mask's range or of ``c``, the last two while
+   ``x`` keeps its sign); a comparison, a limit (``#>``, ``<#``), a conditional
    jump, a REPEAT step or a zero test keeps its answer until its operand
    crosses the boundary (:func:`~spinemu.chip.pasm_affine.first_change`);
    WAITCNT must wait as long every time (its target moves by ``P``); CNT
    reads must move by ``P``.  Anything else that sees a changing value (a
-   multiplication, a division, an index, a pin write, a lock) ends the
-   attempt.  A hub location first read in the period must change by what the
+   product of two changing values, a right shift, an index, a pin write, a
+   lock) ends the attempt.  A hub location first read in the period must change by what the
    period wrote to it, and nothing may read it at another size.  By induction
    every later period ``k`` is period A with every value moved by ``k`` times
    its change, for every ``k`` below the bound ``K`` of all the answers.
@@ -219,12 +220,20 @@ def _rule_memory(chip, op, pc, sp, reads, writes, P) -> int:
     if 0x20 <= b < 0x40 and not b & 1 or b in (0x18, 0x1C):
         _fixed(rest, "an update operand")           # ++ / -- (pre, post, sized), ~ / ~~
         return k
-    if b & 0x40 and not b & 0x20:
+    if b & 0x40 and not b & 0x20:                   # x op= y: the operator on the variable and the stack
         f = b & 0x1F
-        fn = mathops.BINARY[f] if mathops.UNARY[f] is None else mathops.UNARY[f]
-        if fn not in _AFFINE_BINARY and fn not in _AFFINE_UNARY:
-            raise Reject("a changing value in an update operator that does not add or subtract")
-        return min(k, _narrow(rest))
+        u = mathops.UNARY[f]
+        if u is not None:
+            if u not in _AFFINE_UNARY:
+                raise Reject("a changing value in an update operator that does not keep its form")
+            return k
+        fn = mathops.BINARY[f]
+        y = [e for e in rest if e[0] == 2][:1]
+        if not y:
+            raise Reject("an update operand not logged as expected")
+        if len(set(chip.timing._math[f])) != 1 and not (fn in (mathops.div, mathops.mod) and not y[0][4]):
+            raise Reject("a changing value in an operator whose time depends on it")
+        return min(k, _narrow(rest), _binary(fn, v, y[0]))
     if b in (0x02, 0x06):                           # REPEAT var FROM .. TO .. [STEP]: its step
         stack = [e for e in rest if e[0] == 2]      # read as: to (top), from, [step]
         _fixed(rest, "a REPEAT bound or step")
@@ -253,9 +262,17 @@ def _rule_math(chip, op, pc, sp, reads, writes, P) -> int:
         if u is mathops.log_not:
             return _zero_test(reads[0][2], reads[0][4])
         raise Reject("a changing value in an operator that does not keep its form")
+    return _binary(fn, reads[0], reads[1])
+
+
+def _binary(fn, x, y) -> int:
+    """Periods for which binary operator ``fn`` on ``x``, ``y`` (read entries) keeps its form."""
     if fn in _AFFINE_BINARY:
         return INFINITE
-    x, y = reads[0], reads[1]
+    if fn is mathops.mul or fn is mathops.shl:  # by a fixed factor or shift: (x + k*d) * c
+        if y[4] and (fn is mathops.shl or x[4]):
+            raise Reject("a changing value multiplied by a changing one")
+        return INFINITE
     if fn is mathops.bit_and:           # x & mask: bits below the mask's top stay if x moves by multiples
         v, m = (y, x) if x[4] == 0 else (x, y)
         if m[4] or v[4] % (1 << m[2].bit_length()):
@@ -267,6 +284,8 @@ def _rule_math(chip, op, pc, sp, reads, writes, P) -> int:
         if y[4] or not 0 < c < SB or d % c:
             raise Reject("a changing value divided")
         return _changes(x[2], x[4], 0, SB)
+    if fn is mathops.limit_min or fn is mathops.limit_max:    # #> and <#: x or y, while x's side of y stays
+        return _compare("ge" if fn is mathops.limit_min else "le", (x[2], x[4]), (y[2], y[4]))
     kind = _COMPARE.get(fn)
     if kind is not None:
         return _compare(kind, (x[2], x[4]), (y[2], y[4]))

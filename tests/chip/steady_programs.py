@@ -7,7 +7,9 @@ statements are the ways such a state changes or breaks: counters that go up
 or down (longs, and bytes and words that wrap), comparisons of them with
 thresholds they cross later, a mod-n step index into a DAT table, pin
 writes, CNT reads, inner REPEAT loops, values passed between cogs through
-hub RAM, operators the skip does not follow (multiplication, shifts), a
+hub RAM, operators the skip follows only with a fixed operand (multiplication,
+left shifts, limits) or not at all (right shifts, a value multiplied by
+itself period after period), a
 main loop that ends after a number of rounds, and cogs whose loops are much
 slower than the others' (they sleep through many periods of the fast ones).
 """
@@ -39,7 +41,7 @@ class _Gen:
         kinds = ["a++", "a += 3", "b -= 2", f"shared[{me}]++", f"shared[{me}] += 7", f"bytes[{me}]++",
                  f"words[{me}] += 300", "i := (i + 1) // 4", f"!outa[{me}]", f"outa[{me}] := i & 1",
                  f"outa[{me}] := a > {t}", "b := table[i & 7]", "b := cnt - t", "c := cnt",
-                 f"b := shared[{other}] + 1", f"shared[{me}] := bytes[{other}]", "b := a * 3", "b := a >> 2",
+                 f"b := shared[{other}] + 1", f"shared[{me}] := bytes[{other}]", "b := a * 3", "b := a >> 2", "b := a << 2", "c *= 3", "b := a #> 100",
                  "b := -a", "b := a <# 40", f"c := a == {t}", "if", "if", "repeat", "ifinc"]
         k = rng.choice(kinds if depth < 1 else kinds[:-4])
         if k == "if":
