@@ -470,7 +470,8 @@ class _Recorder:
     def __init__(self, steady, log, limit: int):
         self.steady, self.log, self.limit = steady, log, limit
         self.rows: list = []
-        self.hits: list = []        # per anchor visit: (row index, t, snapshot, pin events so far)
+        # per anchor visit: (row index, t, cog states, pin events so far, every cog's time)
+        self.hits: list = []
         self.sigs: list = []        # per anchor interval: its structure
         self.anchor = None
         self.tried: set = set()
@@ -479,7 +480,7 @@ class _Recorder:
     def _hit(self, chip, c):
         rows, hits = self.rows, self.hits
         t = c.t
-        snap = _snapshot(chip, t)
+        snap = _snapshot(chip)
         if hits:
             start, t0 = hits[-1][0], hits[-1][1]
             self.sigs.append(tuple((r[0], r[1], r[2], r[3] - t0, r[6] - r[5]) for r in rows[start:]))
@@ -505,8 +506,8 @@ class _Recorder:
             tried.add(n)            # (once per length: a failed proof costs more than a missed skip)
 
 
-def _snapshot(chip, t: int):
-    """Every cog's state (times relative to ``t``), or None where no period may start."""
+def _snapshot(chip):
+    """Every cog's state (its time apart: :func:`_times`), or None where no period may start."""
     if chip._pend or chip._ahead:
         return None
     out = []
