@@ -29,7 +29,7 @@ from __future__ import annotations
 
 from .ahead import _WRITE_CHECKED, AHEAD
 
-__all__ = ["BusyLoop", "LoopMemory", "learn_busy_loop", "IMPURE_OPS", "LEARN_AFTER", "LEARN_HORIZON"]
+__all__ = ["BusyLoop", "LoopMemory", "LoggedView", "learn_busy_loop", "IMPURE_OPS", "LEARN_AFTER", "LEARN_HORIZON"]
 
 #: bytecodes a cog runs without a wait before a learning attempt
 LEARN_AFTER = 2000
@@ -47,17 +47,53 @@ IMPURE_OPS = frozenset({0x15, 0x1B, 0x1F, 0x20, 0x21, 0x22, 0x23, 0x25, 0x26, 0x
 _TIME_REGS = frozenset({0x1F1, 0x1F2, 0x1FC, 0x1FD})
 
 
-class _TrackedView:
-    """A memory view that logs reads and writes (used only while learning).
+class LoggedView:
+    """A memory view that logs every access as ``(write, shift, index, old, new)``: a read as
+    ``(0, shift, index, value, None)``, a write as ``(1, shift, index, old value, new value)``
+    (``shift`` 0 for bytes, 1 words, 2 longs).  The learner here and the steady-state recorder
+    (steady.py) read their logs in this form.
+    """
+
+    __slots__ = ("view", "shift", "log")
+
+    def __init__(self, view, shift, log):
+        self.view, self.shift, self.log = view, shift, log
+
+    def __getitem__(self, i):
+        v = self.view[i]
+        if isinstance(i, slice):
+            for k in range(*i.indices(len(self.view))):
+                self.log.append((0, self.shift, k, self.view[k], None))
+        else:
+            self.log.append((0, self.shift, i, v, None))
+        return v
+
+    def __setitem__(self, i, v):
+        if isinstance(i, slice):
+            old = list(self.view[i])
+            self.view[i] = v
+            for k, a, b in zip(range(*i.indices(len(self.view))), old, self.view[i]):
+                self.log.append((1, self.shift, k, a, b))
+        else:
+            self.log.append((1, self.shift, i, self.view[i], v))
+            self.view[i] = v
+
+    def __len__(self):
+        return len(self.view)
+
+
+class _TrackedView(LoggedView):
+    """A :class:`LoggedView` for the learner.
 
     Like the guarded interpreter's views (ahead.py) it first rolls back a cog
     that is ahead if the access reaches into its window.
     """
 
-    __slots__ = ("view", "shift", "log", "chip", "watch")
+    __slots__ = ("chip", "watch")
 
     def __init__(self, view, shift, log, chip):
-        self.view, self.shift, self.log, self.chip, self.watch = view, shift, log, chip, chip.watch
+        LoggedView.__init__(self, view, shift, log)
+        self.chip, self.watch = chip, chip.watch
 
     def _guard(self, i, write=False):
         if isinstance(i, slice):
@@ -73,21 +109,11 @@ class _TrackedView:
 
     def __getitem__(self, i):
         self._guard(i)
-        v = self.view[i]
-        if isinstance(i, slice):
-            for k in range(*i.indices(len(self.view))):
-                self.log.append((0, self.shift, k, self.view[k], None))
-        else:
-            self.log.append((0, self.shift, i, v, None))
-        return v
+        return LoggedView.__getitem__(self, i)
 
     def __setitem__(self, i, v):
         self._guard(i, True)
-        self.log.append((1, self.shift, i, self.view[i], v))
-        self.view[i] = v
-
-    def __len__(self):
-        return len(self.view)
+        LoggedView.__setitem__(self, i, v)
 
 
 class _TrackingChip:
@@ -95,10 +121,13 @@ class _TrackingChip:
 
     def __init__(self, chip, log):
         self._chip = chip
-        self.mem = _TrackedView(chip.mem, 0, log, chip)
-        self.mem_words = _TrackedView(chip.mem_words, 1, log, chip)
-        self.mem_longs = _TrackedView(chip.mem_longs, 2, log, chip)
+        self.mem = self._view(chip.mem, 0, log)
+        self.mem_words = self._view(chip.mem_words, 1, log)
+        self.mem_longs = self._view(chip.mem_longs, 2, log)
         self.registers = chip.registers
+
+    def _view(self, view, shift: int, log: list):
+        return _TrackedView(view, shift, log, self._chip)
 
     def __getattr__(self, name):
         return getattr(self._chip, name)

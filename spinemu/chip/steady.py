@@ -59,7 +59,7 @@ from ..bytecode import TABLE
 from . import mathops
 from .cog import RUNNING, STOPPED
 from .control import Halted
-from .fastforward import _TrackingChip, cog_state
+from .fastforward import LoggedView, _TrackingChip, cog_state
 from .pasm_affine import first_change as _first_change
 
 __all__ = ["SteadySkip", "Reject", "analyse_periods", "LOOK_EVERY"]
@@ -421,43 +421,12 @@ def analyse_periods(chip, rows_a, rows_b, log, P: int):
     return K, last
 
 
-class _LoggedView:
-    """A hub view that logs every access as the busy-loop learner's views do (fastforward.py), without
-    their checks for cogs running ahead: none runs ahead while a period is recorded."""
-
-    __slots__ = ("view", "shift", "log")
-
-    def __init__(self, view, shift, log):
-        self.view, self.shift, self.log = view, shift, log
-
-    def __getitem__(self, i):
-        v = self.view[i]
-        if i.__class__ is slice:
-            for k in range(*i.indices(len(self.view))):
-                self.log.append((0, self.shift, k, self.view[k], None))
-        else:
-            self.log.append((0, self.shift, i, v, None))
-        return v
-
-    def __setitem__(self, i, v):
-        if i.__class__ is slice:
-            raise Reject("a slice written")             # (the handlers write single elements)
-        self.log.append((1, self.shift, i, self.view[i], v))
-        self.view[i] = v
-
-    def __len__(self):
-        return len(self.view)
-
-
 class _RecordingChip(_TrackingChip):
-    """The chip as the recording handlers see it: hub accesses and deferred write-backs are logged."""
+    """The chip as the recording handlers see it: hub accesses (without the learner's checks for cogs
+    running ahead: none runs ahead while a period is recorded) and deferred write-backs are logged."""
 
-    def __init__(self, chip, log):
-        object.__setattr__(self, "_chip", chip)
-        object.__setattr__(self, "mem", _LoggedView(chip.mem, 0, log))
-        object.__setattr__(self, "mem_words", _LoggedView(chip.mem_words, 1, log))
-        object.__setattr__(self, "mem_longs", _LoggedView(chip.mem_longs, 2, log))
-        object.__setattr__(self, "registers", chip.registers)
+    def _view(self, view, shift: int, log: list):
+        return LoggedView(view, shift, log)
 
     def defer_write(self, writer, size, hub_addr, value, t, key, preempt=True):
         self.mem_longs.log.append((1, size, hub_addr >> size, None, value))
@@ -467,8 +436,8 @@ class _RecordingChip(_TrackingChip):
 class _Recorder:
     """The record of a recording (SteadySkip._record fills it) and the search for the period."""
 
-    def __init__(self, steady, log, limit: int):
-        self.steady, self.log, self.limit = steady, log, limit
+    def __init__(self, steady, log):
+        self.steady, self.log = steady, log
         self.rows: list = []
         # per anchor visit: (row index, t, cog states, pin events so far, every cog's time)
         self.hits: list = []
@@ -655,8 +624,7 @@ class SteadySkip:
             self.handlers = build_handlers(_RecordingChip(chip, self.log), chip.timing)
         log = self.log
         log.clear()
-        rec = _Recorder(self, log, limit)
-        saved = list(chip.handlers)
+        rec = _Recorder(self, log)
         real = chip._handlers
         chip.handlers[:] = self.handlers
         chip._handlers = self.handlers
@@ -667,7 +635,7 @@ class SteadySkip:
                 reason = h.reason
         finally:
             chip._handlers = real
-            chip.handlers[:] = saved
+            chip.handlers[:] = real
             chip._cogs_changed = True
             log.clear()
         self.recorded += len(rec.rows)
