@@ -88,6 +88,9 @@ BUDGET_INTERVAL = 512
 _SLEEPY = 320
 #: a skip must save at least this many periods
 MIN_SKIP = 2
+#: cycles one skip goes at most (a state that lasts for ever, in a run without a cycle limit, is
+#: skipped a stretch at a time, not 2**62 cycles of pin changes at once)
+MAX_SKIP = 1 << 36
 #: bytecodes a skip must save per bytecode recorded (else the recording looks on for a longer period,
 #: and one that finds none makes the next look come later)
 PAYOFF = 20
@@ -761,7 +764,7 @@ class SteadySkip:
         for i in asleep:                        # the skip ends two periods before a sleeper wakes
             self.wake_at = min(self.wake_at, chip._key(chip.cogs[i]))
             wake = min(wake, (self.wake_at - t_now) // P - 2)
-        skip = min(K - 2, room, wake)
+        skip = min(K - 2, room, wake, MAX_SKIP // P)
         if skip < MIN_SKIP or skip * (b1 - a1) < PAYOFF * len(rows) and skip < room:
             return False                        # (too little: a longer period may do better)
         self.woken = skip == wake               # (the same state goes on after the sleeper's turn)

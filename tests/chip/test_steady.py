@@ -14,7 +14,7 @@ import pytest
 
 from spinemu.chip import Chip
 from spinemu.chip.pasm_affine import N
-from spinemu.chip.steady import INFINITE, Reject, _compare, _signed_range
+from spinemu.chip.steady import INFINITE, MAX_SKIP, Reject, SteadySkip, _compare, _signed_range
 from spinemu.compiler.program import compile_source
 
 from chip_helpers import ARTICLE, read_bytes
@@ -94,6 +94,28 @@ def test_a_fast_cog_is_skipped_while_a_slow_one_sleeps_and_the_slow_one_still_wa
     steady = chip._steady
     assert steady.skips >= 10                  # one or two per quarter second of the slow cog
     assert steady.periods * 80_000 > 200_000_000   # more than half of the run skipped
+
+
+def test_a_state_that_lasts_for_ever_is_skipped_a_bounded_stretch_at_a_time(monkeypatch):
+    # no cycle limit: the skip's only bound is its own, and the run goes on skipping
+    image = compile_source(SLOW_AND_FAST.replace("clkfreq / 4", "clkfreq / 1000"), "endless.spin").binary
+    apply = SteadySkip._apply
+
+    def bounded(self, chip, m, P, *rest):
+        assert m * P <= MAX_SKIP
+        apply(self, chip, m, P, *rest)
+    monkeypatch.setattr(SteadySkip, "_apply", bounded)
+
+    class Enough(Exception):
+        pass
+
+    def progress(t):
+        if t > 3 * MAX_SKIP:
+            raise Enough
+    chip = Chip(image)
+    with pytest.raises(Enough):
+        chip.run(progress=progress)
+    assert chip._steady.skips >= 3
 
 
 def test_the_corrected_demo_runs_the_same_skipping_its_free_run():
