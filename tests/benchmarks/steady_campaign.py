@@ -7,7 +7,8 @@ between cogs, operators the skip refuses, main loops that end, slow cogs
 sleeping through fast ones) for every seed in the range, runs it for
 ``--cycles`` cycles with ``Chip(steady_skip=False)`` and with the default,
 and prints every seed whose pin trace, hub RAM, end cycle, reason,
-bytecodes per cog, cog events or fault differ, then totals (programs, how
+bytecodes per cog, cog events, runtime warnings or fault differ
+(``schedule_compare.run_outcome``), then totals (programs, how
 many skipped, periods skipped).  ``--multicog`` takes the multi-cog
 programs of the scheduling comparison (tests/chip/multicog_programs.py:
 locks, races, cogs starting and stopping each other) instead.  Exit status 1
@@ -28,15 +29,7 @@ sys.path[:0] = [ROOT, os.path.join(ROOT, "tests", "chip")]
 
 from spinemu.chip import Chip  # noqa: E402
 from spinemu.compiler.program import compile_source  # noqa: E402
-
-
-def outcome(image: bytes, skip: bool, cycles: int):
-    chip = Chip(image, steady_skip=skip)
-    try:
-        r = chip.run(max_cycles=cycles)
-    except Exception as e:          # a fault must be the same fault
-        return (type(e).__name__, str(e)), chip
-    return (r.trace.changes, r.hub, r.end_cycle, r.reason, r.stats["bytecodes_per_cog"], r.cog_events), chip
+from schedule_compare import run_outcome  # noqa: E402
 
 
 def one(job):
@@ -47,8 +40,9 @@ def one(job):
     else:
         from steady_programs import program
         image = compile_source(program(seed), f"steady{seed}.spin").binary
-    want, _ = outcome(image, False, cycles)
-    got, chip = outcome(image, True, cycles)
+    want = run_outcome(Chip(image, steady_skip=False), cycles)
+    chip = Chip(image)
+    got = run_outcome(chip, cycles)
     steady = chip._steady
     return seed, got == want, steady.skips if steady else 0, steady.periods if steady else 0
 

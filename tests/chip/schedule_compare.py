@@ -15,7 +15,12 @@ from multicog_programs import program
 
 def outcome(image: bytes, run_ahead: bool, cycles, compat: str = "spinsim", **kw):
     """Everything one run produces (or the fault it ended with); ``kw`` go to :class:`Chip`."""
-    chip = Chip(image, compat=compat, run_ahead=run_ahead, **kw)
+    return run_outcome(Chip(image, compat=compat, run_ahead=run_ahead, **kw), cycles)
+
+
+def run_outcome(chip: Chip, cycles) -> object:
+    """Everything the run of ``chip`` for ``cycles`` produces (a dict), or the fault it ended with
+    (a ``(type name, message)`` tuple)."""
     try:
         r = chip.run(max_cycles=cycles)
     except Exception as e:          # a fault must be the same fault
