@@ -126,21 +126,9 @@ def _width(text: str) -> int:
 
 def _write_atomic(path: str, data, binary: bool) -> None:
     """Write a whole file or nothing: to a temporary file first, then rename."""
-    folder = os.path.dirname(os.path.abspath(path)) or "."
-    import tempfile
+    from .fileio import write_atomic
 
-    fd, tmp = tempfile.mkstemp(prefix=".spinemu-", dir=folder)
-    try:
-        with os.fdopen(fd, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8"})) as f:
-            if callable(data):
-                data(f)
-            else:
-                f.write(data)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+    write_atomic(path, data, binary)
 
 
 def _read_bytes(path: str) -> bytes:

@@ -11,16 +11,15 @@ misses.  The file is read with :mod:`marshal` (no code runs while loading)
 and written atomically; a damaged or unreadable file counts as empty, and a
 cache that cannot be written is silently skipped.  The directory is
 ``$SPINEMU_CACHE_DIR``, else ``$XDG_CACHE_HOME/spinemu``, else
-``~/.cache/spinemu``, in a subdirectory per spinemu version and Python bytecode
-magic; ``SPINEMU_CACHE=0`` (or ``spinemu run --no-cache``) turns it off.  At
+``~/.cache/spinemu``, in a subdirectory per spinemu version and Python
+version; ``SPINEMU_CACHE=0`` (or ``spinemu run --no-cache``) turns it off.  At
 most :data:`KEEP` files are kept (the least recently used go first).
 """
 from __future__ import annotations
 
-import importlib.util
 import marshal
 import os
-import tempfile
+import sys
 import zlib
 from typing import Optional
 
@@ -39,7 +38,7 @@ def cache_dir() -> Optional[str]:
     if not base:
         xdg = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
         base = os.path.join(xdg, "spinemu")
-    return os.path.join(base, f"blocks-{__version__}-{importlib.util.MAGIC_NUMBER.hex()}")
+    return os.path.join(base, f"blocks-{__version__}-{sys.implementation.cache_tag}-{sys.hexversion:08x}")
 
 
 def for_image(image: bytes) -> Optional["CodeCache"]:
@@ -85,10 +84,12 @@ class CodeCache:
         """Write the cache if this run compiled something new (errors are ignored)."""
         if not self._dirty:
             return
+        from ..fileio import create_beside
+
         d = os.path.dirname(self.path)
         try:
             os.makedirs(d, exist_ok=True)
-            fd, tmp = tempfile.mkstemp(dir=d, suffix=".tmp")
+            fd, tmp = create_beside(self.path)
             with os.fdopen(fd, "wb") as f:
                 f.write(marshal.dumps(self.codes))
             os.replace(tmp, self.path)

@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import os
 import pickle
-import tempfile
 import zlib
 from typing import Callable, Optional
 
@@ -131,9 +130,11 @@ def load_tables(path=None, use_cache: bool = True) -> Tables:
             pass
     tables = _build_tables(text)
     if use_cache:
+        from ..fileio import create_beside
+
         try:
             os.makedirs(folder, exist_ok=True)
-            fd, tmp = tempfile.mkstemp(dir=folder, suffix=".tmp")
+            fd, tmp = create_beside(cache)
             with os.fdopen(fd, "wb") as fh:
                 pickle.dump(tables, fh, protocol=pickle.HIGHEST_PROTOCOL)
             os.replace(tmp, cache)

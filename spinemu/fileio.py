@@ -1,0 +1,44 @@
+"""Writing a whole file or nothing: to a new file beside it first, then renaming it over the target.
+
+Used for the files spinemu writes (traces, images, hub dumps, its caches).
+Unlike :func:`tempfile.mkstemp`, the new file gets the permissions the user's
+umask gives any new file (mkstemp's 0600 would stay on a trace after the
+rename), and :mod:`tempfile` (some milliseconds to import: it pulls in
+shutil, random and the compression modules) stays out of a run's start-up.
+"""
+from __future__ import annotations
+
+import itertools
+import os
+
+__all__ = ["create_beside", "write_atomic"]
+
+_serial = itertools.count()
+
+
+def create_beside(path: str, suffix: str = ".tmp"):
+    """``(fd, name)`` of a new, empty file (opened for writing) in ``path``'s folder; raises OSError."""
+    folder = os.path.dirname(os.path.abspath(path)) or "."
+    base = os.path.basename(path)
+    while True:
+        name = os.path.join(folder, f".{base}.{os.getpid()}-{next(_serial)}{suffix}")
+        try:
+            return os.open(name, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0), 0o666), name
+        except FileExistsError:     # (left by a process that died with this pid: take the next name)
+            continue
+
+
+def write_atomic(path: str, data, binary: bool = True) -> None:
+    """Write ``data`` (bytes or str, or a function given the open file) to ``path``, whole or not at all."""
+    fd, tmp = create_beside(path)
+    try:
+        with os.fdopen(fd, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8"})) as f:
+            if callable(data):
+                data(f)
+            else:
+                f.write(data)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
