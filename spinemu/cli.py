@@ -230,12 +230,19 @@ def cmd_compile(args, out: _Out) -> int:
 
 
 # ----------------------------------------------------------------------------- run
-def _load_target(path: str, include_dirs, defines=()):
-    """(image bytes, source_map or None) for a .spin/.binary/.eeprom target."""
+def _load_target(path: str, include_dirs, defines=(), cached: bool = False):
+    """(image bytes, source_map or None, program or None) for a .spin/.binary/.eeprom target.
+
+    ``cached``: a Spin program may come from the compiled-program cache (spinemu.progcache).
+    """
     from .image import load_image
 
     if _kind(path) == "spin":
-        prog = _compile(path, include_dirs, defines)
+        if cached and os.path.isfile(path):
+            from .progcache import compile_cached
+            prog = compile_cached(path, include_dirs, defines)
+        else:
+            prog = _compile(path, include_dirs, defines)
         table = getattr(prog, "line_table", None)
         source_map = (lambda addr: table.get(addr)) if isinstance(table, dict) else table
         return prog.binary, source_map, prog
@@ -315,7 +322,8 @@ def cmd_run(args, out: _Out) -> int:
         raise UsageError("--timing and --debug-in apply to BASIC Stamp programs (.bs2) only")
     if args.console_in_at is not None and not args.console_in:
         raise UsageError("--console-in-at needs --console-in FILE (the bytes to send)")
-    image, source_map, prog = _load_target(args.target, args.include, args.define)
+    image, source_map, prog = _load_target(args.target, args.include, args.define,
+                                           cached=not args.no_cache and args.engine != "python")
     _print_hints(out, prog)
     from .image import FALLBACK_CLOCK_HZ, ImageHeader, to_eeprom
 
@@ -773,8 +781,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="where --trace-cog writes its log (default: standard output)")
     r.add_argument("--no-progress", action="store_true", help="no progress bar")
     r.add_argument("--no-cache", action="store_true",
-                   help="compile the program's hot blocks anew instead of taking them from the cache of "
-                        "earlier runs (~/.cache/spinemu; SPINEMU_CACHE=0 turns it off for good)")
+                   help="compile the program (and its hot blocks) anew instead of taking them from the "
+                        "cache of earlier runs, which is used only while no source or folder they came "
+                        "from has changed (~/.cache/spinemu; SPINEMU_CACHE=0 turns it off for good)")
     r.add_argument("--no-steady-skip", action="store_true",
                    help="run every period of a steady state paced by WAITCNT (a blinking LED, a PWM loop) "
                         "instead of skipping the periods proven to repeat (the results are the same)")

@@ -10,8 +10,9 @@ from __future__ import annotations
 
 import itertools
 import os
+from typing import Optional
 
-__all__ = ["create_beside", "write_atomic"]
+__all__ = ["create_beside", "write_atomic", "cache_base"]
 
 _serial = itertools.count()
 
@@ -42,3 +43,18 @@ def write_atomic(path: str, data, binary: bool = True) -> None:
         if os.path.exists(tmp):
             os.unlink(tmp)
         raise
+
+
+def cache_base() -> Optional[str]:
+    """Where spinemu keeps its caches (compiled blocks, compiled programs), or None when caching is off.
+
+    ``$SPINEMU_CACHE_DIR``, else ``$XDG_CACHE_HOME/spinemu``, else ``~/.cache/spinemu``;
+    ``SPINEMU_CACHE=0`` turns caching off.
+    """
+    if os.environ.get("SPINEMU_CACHE", "1") == "0":
+        return None
+    base = os.environ.get("SPINEMU_CACHE_DIR")
+    if not base:
+        xdg = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+        base = os.path.join(xdg, "spinemu")
+    return base

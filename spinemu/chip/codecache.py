@@ -31,13 +31,12 @@ KEEP = 256
 
 def cache_dir() -> Optional[str]:
     """The directory for this spinemu and Python, or None when caching is off."""
-    if os.environ.get("SPINEMU_CACHE", "1") == "0":
-        return None
     from .. import __version__
-    base = os.environ.get("SPINEMU_CACHE_DIR")
-    if not base:
-        xdg = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-        base = os.path.join(xdg, "spinemu")
+    from ..fileio import cache_base
+
+    base = cache_base()
+    if base is None:
+        return None
     return os.path.join(base, f"blocks-{__version__}-{sys.implementation.cache_tag}-{sys.hexversion:08x}")
 
 

@@ -286,6 +286,7 @@ class _Assembler:
                 pos = body.pos
                 search.warnings.append(Diagnostic(found.warning, pos.path, pos.line, pos.col,
                                                   self.unit.spin.source.line(pos.line), "warning"))
+            search.files.add(found.path)
             try:
                 with open(found.path, "rb") as fh:
                     data = fh.read(HUB_BYTES + 1)   # more than the hub holds cannot fit in any image

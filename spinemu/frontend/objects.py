@@ -102,7 +102,9 @@ class _Loader:
         real = os.path.realpath(path)
         if real in self.units:
             return self.units[real]
-        source = source or read_source(path)
+        if source is None:
+            source = read_source(path)
+            self.search.files.add(path)
         spin, errors = parse_text(source, self.defines)
         self.errors.extend(errors)
         self.syntax_errors += len(errors)
@@ -122,9 +124,11 @@ class _Loader:
             if os.path.realpath(child_path) in self.stack:
                 self._error(msg.OBJECT_RECURSION.format(name=decl.filename), decl, spin)
                 continue
-            unit.hints.extend(shadowed_object_hints(decl, child_path, here,
-                                                    [f.path for f in self.search.folders(here)[1:]],
-                                                    spin.source))
+            libraries = [f.path for f in self.search.folders(here)[1:]]
+            unit.hints.extend(shadowed_object_hints(decl, child_path, here, libraries, spin.source))
+            # (the hint compares the file found with its namesakes in every library folder)
+            self.search.dirs.update(libraries)
+            self.search.files.update(os.path.join(d, os.path.basename(child_path)) for d in libraries)
             child = self.load(child_path)
             if child is not None:
                 unit.children.append((decl, child))

@@ -107,6 +107,14 @@ def _candidate_library_folders(platform: str, environ) -> list:
             ("/opt/parallax/spin", "SimpleIDE")]
 
 
+def _library_decisions(platform: str, environ) -> list:
+    """The folders whose existence or files decide :func:`standard_library_folders`."""
+    out = [path for path, _tool in _candidate_library_folders(platform, environ)]
+    if platform.startswith("win"):
+        out += [os.path.join(base, "Parallax Inc") for base in _program_files(environ)]
+    return out
+
+
 def standard_library_folders(platform: Optional[str] = None, environ=None) -> list:
     """The installed tools' Spin library folders that exist on this machine, as :class:`Folder`.
 
@@ -158,8 +166,15 @@ class SearchPath:
         for d in (environ.get(ENV_VAR) or "").split(os.pathsep):
             if d.strip():
                 self._extra.append(Folder(os.path.expanduser(d.strip()), ENV_VAR))
+        #: what the lookups depended on (spinemu.progcache checks it before reusing a compiled
+        #: program): the folders whose files decided a lookup, existing or not, and the files
+        #: whose contents went into the program (the loader and the DAT ``file`` reader add these)
+        self.dirs: set = set()
+        self.files: set = set()
         if self.standard:
             self._extra += standard_library_folders(self.platform, environ)
+            platform = sys.platform if self.platform is None else self.platform
+            self.dirs.update(_library_decisions(platform, environ))
         self._listing: dict = {}
 
     def folders(self, from_dir: str) -> list:
@@ -190,6 +205,7 @@ class SearchPath:
         head, base = os.path.split(name)
         low = base.lower()
         for f in self.folders(from_dir):
+            self.dirs.add(os.path.join(f.path, head) if head else f.path)
             cand = os.path.join(f.path, name)
             if os.path.isfile(cand):
                 return Found(cand)
