@@ -718,8 +718,22 @@ def _define_option(p) -> None:
                    help="define NAME for #ifdef in every file (as OpenSpin's -D)")
 
 
+class _Parser(argparse.ArgumentParser):
+    """An ArgumentParser whose help is as wide as the terminal, found without importing :mod:`shutil`
+    (argparse imports it for that on every parser built; it costs start-up some milliseconds)."""
+
+    def _get_formatter(self):
+        columns = os.environ.get("COLUMNS", "")
+        if not columns.isdigit() or int(columns) <= 0:          # as shutil.get_terminal_size
+            try:
+                columns = os.get_terminal_size(sys.__stdout__.fileno()).columns
+            except (AttributeError, ValueError, OSError):
+                columns = 0
+        return self.formatter_class(prog=self.prog, width=(int(columns) or 80) - 2)
+
+
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(
+    p = _Parser(
         prog="spinemu",
         description="Compile, run, trace and translate Propeller 1 Spin programs; run BASIC Stamp 2 PBASIC.",
         epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -813,7 +827,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     tr = sub.add_parser("trace", help="look at, compare, convert, plot and decode pin traces (log files)",
                         description="Tools for '<cycle> <dir> <out>' trace logs written by 'spinemu run --trace'.")
-    clock = argparse.ArgumentParser(add_help=False)
+    clock = _Parser(add_help=False)
     clock.add_argument("--clock", type=_positive_int, default=CLOCK_DEFAULT,
                        help="cycles per second of the log (default 80_000_000; BASIC Stamp logs: 1_000_000)")
     ts = tr.add_subparsers(dest="trace_action", metavar="ACTION")
