@@ -61,8 +61,9 @@ This module is a shared leaf: it imports nothing from the project.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Optional
+
+from .records import FrozenRecord
 
 __all__ = [
     "Opcode", "TABLE", "BY_MNEMONIC", "MathOp", "MATH_OPS", "MATH_BY_SYMBOL",
@@ -82,8 +83,7 @@ MEM_BASES = ("MEM", "OBJ", "VAR", "LOC")
 _SIZE_NAMES = {1: "BYTE", 2: "WORD", 4: "LONG"}
 
 
-@dataclass(frozen=True)
-class Opcode:
+class Opcode(FrozenRecord):
     """One bytecode value.
 
     Attributes:
@@ -97,29 +97,24 @@ class Opcode:
         size, base, indexed, access: decoded fields of memory/variable opcodes.
     """
 
-    code: int
-    mnemonic: str
-    fmt: str
-    pops: Optional[int]
-    pushes: Optional[int]
-    handler: str
-    doc: str
-    size: int = 0
-    base: str = ""
-    indexed: bool = False
-    access: str = ""
-    var_offset: int = -1
+    _fields = ("code", "mnemonic", "fmt", "pops", "pushes", "handler", "doc", "size", "base", "indexed",
+               "access", "var_offset")
+
+    def __init__(self, code: int, mnemonic: str, fmt: str, pops: Optional[int], pushes: Optional[int],
+                 handler: str, doc: str, size: int = 0, base: str = "", indexed: bool = False,
+                 access: str = "", var_offset: int = -1):
+        self.code, self.mnemonic, self.fmt, self.pops, self.pushes = code, mnemonic, fmt, pops, pushes
+        self.handler, self.doc, self.size, self.base, self.indexed = handler, doc, size, base, indexed
+        self.access, self.var_offset = access, var_offset
 
 
-@dataclass(frozen=True)
-class MathOp:
+class MathOp(FrozenRecord):
     """A math operator ``$E0-$FF``; ``assign_code`` is its low 5 bits for MATH assignments."""
 
-    code: int
-    mnemonic: str
-    symbol: str
-    unary: bool
-    doc: str
+    _fields = ("code", "mnemonic", "symbol", "unary", "doc")
+
+    def __init__(self, code: int, mnemonic: str, symbol: str, unary: bool, doc: str):
+        self.code, self.mnemonic, self.symbol, self.unary, self.doc = code, mnemonic, symbol, unary, doc
 
     @property
     def assign_code(self) -> int:
@@ -167,16 +162,16 @@ MATH_BY_SYMBOL: dict[tuple[str, bool], MathOp] = {(op.symbol, op.unary): op for 
 
 
 # ----------------------------------------------------------------------------- assignment ops
-@dataclass(frozen=True)
-class AssignOp:
+class AssignOp(FrozenRecord):
     """A decoded assignment-operator byte (the byte after a USING access)."""
 
-    code: int
-    mnemonic: str
-    push: bool
-    size: int = 0          # inc/dec: 0 = bit field, 1/2/4 bytes
-    math: Optional[MathOp] = None
-    has_jump: bool = False
+    _fields = ("code", "mnemonic", "push", "size", "math", "has_jump")
+
+    def __init__(self, code: int, mnemonic: str, push: bool, size: int = 0, math: Optional[MathOp] = None,
+                 has_jump: bool = False):
+        self.code, self.mnemonic, self.push = code, mnemonic, push
+        self.size = size            # inc/dec: 0 = bit field, 1/2/4 bytes
+        self.math, self.has_jump = math, has_jump
 
     @property
     def text(self) -> str:

@@ -931,12 +931,10 @@ def _render_error(err: SpinError, target: Optional[str] = None) -> str:
     An image or run-time error that names no file (an image has no source lines) is about
     the command's ``target``.
     """
-    from dataclasses import replace
-
     from .diagnostics import EmulationError, ImageError
 
     if target and isinstance(err, (ImageError, EmulationError)):
-        err.diagnostics = [replace(d, path=d.path or target) for d in err.diagnostics]
+        err.diagnostics = [d.replace(path=d.path or target) for d in err.diagnostics]
     return "\n".join(_render_error_diagnostic(d) for d in err.diagnostics)
 
 
@@ -950,9 +948,7 @@ def _short_path(path):
 
 
 def _render_error_diagnostic(d) -> str:
-    from dataclasses import replace
-
-    return replace(d, path=_short_path(d.path)).render()
+    return d.replace(path=_short_path(d.path)).render()
 
 
 # ----------------------------------------------------------------------------- last-resort guard

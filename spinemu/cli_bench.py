@@ -52,13 +52,16 @@ class RunBench:
 
     def __init__(self, args, out, *, clock_hz: int, pin_count: int, engine: str,
                  eeprom_image: Optional[bytes] = None, session=None):
-        from .bench import Bench, I2cEeprom
+        from .bench import Bench
         from .bench.board import BenchPinError
-        from .bench.benchfile import load_bench
 
         self.args, self.out, self.clock_hz, self.pin_count = args, out, clock_hz, pin_count
         self.spec = _parse_spec(args, pin_count, engine)
-        self.bench = load_bench(args.bench, pin_count=pin_count, engine=engine) if args.bench else Bench()
+        if args.bench:
+            from .bench.benchfile import load_bench
+            self.bench = load_bench(args.bench, pin_count=pin_count, engine=engine)
+        else:
+            self.bench = Bench()
         self.console = session.console if session is not None else None
         if self.console is not None:
             if max(self.console.tx, self.console.rx) >= pin_count:
@@ -76,6 +79,7 @@ class RunBench:
                 if not getattr(self.eeprom, "data_given", True):
                     self.eeprom.load(eeprom_image)
             elif args.eeprom_out or args.target.lower().endswith((".eeprom", ".eep")):
+                from .bench import I2cEeprom
                 self.eeprom = self.bench.add(I2cEeprom(data=eeprom_image))
         elif args.eeprom_out:
             raise UsageError("--eeprom-out: a BASIC Stamp program's EEPROM is its own (result.eeprom); "

@@ -25,14 +25,14 @@ This module is a shared leaf: it imports nothing from the project.
 from __future__ import annotations
 
 import bisect
-from dataclasses import dataclass, field
 from typing import Iterator, Optional
+
+from .records import FrozenRecord, Record
 
 __all__ = ["FrameSlot", "MethodDebug", "Variable", "ObjectDebug", "Instance", "DebugInfo"]
 
 
-@dataclass(frozen=True)
-class FrameSlot:
+class FrameSlot(FrozenRecord):
     """One named long (or array of longs) in a method's frame.
 
     Attributes:
@@ -42,14 +42,13 @@ class FrameSlot:
         kind: ``"result"``, ``"param"`` or ``"local"``.
     """
 
-    name: str
-    offset: int
-    count: int
-    kind: str
+    _fields = ("name", "offset", "count", "kind")
+
+    def __init__(self, name: str, offset: int, count: int, kind: str):
+        self.name, self.offset, self.count, self.kind = name, offset, count, kind
 
 
-@dataclass
-class MethodDebug:
+class MethodDebug(Record):
     """A method of an object, placed in hub RAM.
 
     Attributes:
@@ -62,14 +61,13 @@ class MethodDebug:
         slots: the frame's named longs, result first.
     """
 
-    name: str
-    public: bool
-    index: int
-    path: str
-    start: int
-    end: int
-    line: int
-    slots: list = field(default_factory=list)
+    _fields = ("name", "public", "index", "path", "start", "end", "line", "slots")
+
+    def __init__(self, name: str, public: bool, index: int, path: str, start: int, end: int, line: int,
+                 slots: Optional[list] = None):
+        self.name, self.public, self.index, self.path = name, public, index, path
+        self.start, self.end, self.line = start, end, line
+        self.slots = [] if slots is None else slots
 
     @property
     def nparams(self) -> int:
@@ -96,8 +94,7 @@ class MethodDebug:
         return None
 
 
-@dataclass(frozen=True)
-class Variable:
+class Variable(FrozenRecord):
     """A VAR variable or a DAT label of one object instance.
 
     Attributes:
@@ -108,11 +105,10 @@ class Variable:
         count: elements (for a DAT label: up to the next label).
     """
 
-    name: str
-    section: str
-    addr: int
-    size: int
-    count: int
+    _fields = ("name", "section", "addr", "size", "count")
+
+    def __init__(self, name: str, section: str, addr: int, size: int, count: int):
+        self.name, self.section, self.addr, self.size, self.count = name, section, addr, size, count
 
     @property
     def end(self) -> int:
@@ -124,21 +120,22 @@ class Variable:
         return f"{kind} {self.name}" + (f"[{self.count}]" if self.count != 1 else "")
 
 
-@dataclass
-class ObjectDebug:
+class ObjectDebug(Record):
     """One compiled object (a .spin file), placed once at ``base`` however many instances use it."""
 
-    path: str
-    base: int
-    size: int
-    methods: list = field(default_factory=list, repr=False)     # [MethodDebug] in table order
-    dat: list = field(default_factory=list, repr=False)         # [Variable] with absolute addresses
-    table_size: int = 4                             # bytes of its method and object table
-    code_start: int = 0                             # hub address of its first method's code
+    _fields = ("path", "base", "size", "methods", "dat", "table_size", "code_start")
+    _repr_fields = ("path", "base", "size", "table_size", "code_start")
+
+    def __init__(self, path: str, base: int, size: int, methods: Optional[list] = None,
+                 dat: Optional[list] = None, table_size: int = 4, code_start: int = 0):
+        self.path, self.base, self.size = path, base, size
+        self.methods = [] if methods is None else methods   # [MethodDebug] in table order
+        self.dat = [] if dat is None else dat               # [Variable] with absolute addresses
+        self.table_size = table_size                        # bytes of its method and object table
+        self.code_start = code_start                        # hub address of its first method's code
 
 
-@dataclass
-class Instance:
+class Instance(Record):
     """One instance of an object: the top object, or a child named by an OBJ line.
 
     Attributes:
@@ -150,11 +147,14 @@ class Instance:
         children: one Instance per object-table entry.
     """
 
-    name: str
-    obj: ObjectDebug
-    vbase: int
-    var: list = field(default_factory=list, repr=False)
-    children: list = field(default_factory=list, repr=False)
+    _fields = ("name", "obj", "vbase", "var", "children")
+    _repr_fields = ("name", "obj", "vbase")
+
+    def __init__(self, name: str, obj: ObjectDebug, vbase: int, var: Optional[list] = None,
+                 children: Optional[list] = None):
+        self.name, self.obj, self.vbase = name, obj, vbase
+        self.var = [] if var is None else var
+        self.children = [] if children is None else children
 
     def variables(self) -> list:
         """VAR then DAT, as :class:`Variable` records."""

@@ -15,8 +15,9 @@ from __future__ import annotations
 
 import re
 import unicodedata
-from dataclasses import dataclass, field
 from typing import Iterable, Optional
+
+from .records import FrozenRecord, Record
 
 __all__ = [
     "Diagnostic",
@@ -32,8 +33,7 @@ __all__ = [
 ]
 
 
-@dataclass(frozen=True)
-class Diagnostic:
+class Diagnostic(FrozenRecord):
     """One message about one place in one file.
 
     Args:
@@ -53,13 +53,13 @@ class Diagnostic:
             ^
     """
 
-    message: str
-    path: Optional[str] = None
-    line: Optional[int] = None
-    column: Optional[int] = None
-    source_line: Optional[str] = None
-    severity: str = "error"
-    length: int = 1
+    _fields = ("message", "path", "line", "column", "source_line", "severity", "length")
+
+    def __init__(self, message: str, path: Optional[str] = None, line: Optional[int] = None,
+                 column: Optional[int] = None, source_line: Optional[str] = None, severity: str = "error",
+                 length: int = 1):
+        self.message, self.path, self.line, self.column = message, path, line, column
+        self.source_line, self.severity, self.length = source_line, severity, length
 
     def location(self) -> str:
         """``path:line:col`` (as much of it as is known)."""
@@ -200,8 +200,7 @@ class UsageError(SpinError):
     exit_status = 2
 
 
-@dataclass
-class DiagnosticBag:
+class DiagnosticBag(Record):
     """Collects diagnostics so that one run can report several errors.
 
     >>> bag = DiagnosticBag()
@@ -216,7 +215,10 @@ class DiagnosticBag:
       ^
     """
 
-    items: list[Diagnostic] = field(default_factory=list)
+    _fields = ("items",)
+
+    def __init__(self, items: Optional[list] = None):
+        self.items: list[Diagnostic] = [] if items is None else items
 
     def add(self, diag: Diagnostic) -> None:
         self.items.append(diag)

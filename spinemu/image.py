@@ -33,9 +33,9 @@ This module is a shared leaf: it imports nothing from the project but
 from __future__ import annotations
 
 import struct
-from dataclasses import dataclass
 
 from .diagnostics import ImageError
+from .records import Record
 
 __all__ = [
     "HUB_SIZE", "HEADER_SIZE", "FALLBACK_CLOCK_HZ", "BOOT_FRAME", "ImageHeader", "ObjectTable",
@@ -59,8 +59,7 @@ CLKMODE_NAMES = {
 }
 
 
-@dataclass
-class ImageHeader:
+class ImageHeader(Record):
     """The first 16 bytes of an image.
 
     >>> h = ImageHeader.parse(bytes.fromhex("00b4c4046fdc1000a800bc002800c000"))
@@ -68,14 +67,12 @@ class ImageHeader:
     (80000000, '0x6f', 16, 168, 188, 40, 192)
     """
 
-    clkfreq: int
-    clkmode: int
-    checksum: int
-    pbase: int
-    vbase: int
-    dbase: int
-    pcurr: int
-    dcurr: int
+    _fields = ("clkfreq", "clkmode", "checksum", "pbase", "vbase", "dbase", "pcurr", "dcurr")
+
+    def __init__(self, clkfreq: int, clkmode: int, checksum: int, pbase: int, vbase: int, dbase: int,
+                 pcurr: int, dcurr: int):
+        self.clkfreq, self.clkmode, self.checksum = clkfreq, clkmode, checksum
+        self.pbase, self.vbase, self.dbase, self.pcurr, self.dcurr = pbase, vbase, dbase, pcurr, dcurr
 
     FORMAT = "<IBBHHHHH"
 
@@ -90,8 +87,7 @@ class ImageHeader:
                            self.vbase, self.dbase, self.pcurr, self.dcurr)
 
 
-@dataclass
-class ObjectTable:
+class ObjectTable(Record):
     """An object's table: size, method entries and child entries.
 
     Attributes:
@@ -101,10 +97,10 @@ class ObjectTable:
         children: ``(object_offset, var_offset)`` per child instance.
     """
 
-    base: int
-    size: int
-    methods: list
-    children: list
+    _fields = ("base", "size", "methods", "children")
+
+    def __init__(self, base: int, size: int, methods: list, children: list):
+        self.base, self.size, self.methods, self.children = base, size, methods, children
 
     @classmethod
     def parse(cls, hub: bytes, base: int) -> "ObjectTable":

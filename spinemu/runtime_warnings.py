@@ -33,10 +33,10 @@ This module is a shared leaf: it imports nothing from the project but
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Callable, Optional
 
 from .diagnostics import Diagnostic, EmulationError
+from .records import Record
 
 __all__ = ["KINDS", "RunWarning", "WarningLog", "RuntimeWarningError", "waitcnt_passed", "stack_overflow",
            "no_free_cog", "pin_conflict", "write_outside_hub", "write_into_code", "uninitialized_local",
@@ -46,8 +46,7 @@ KINDS = ("waitcnt-passed", "stack-overflow", "no-free-cog", "pin-conflict", "wri
          "write-into-code", "uninitialized")
 
 
-@dataclass
-class RunWarning:
+class RunWarning(Record):
     """One warning: what, where (cog, hub address, source place), when, and how often.
 
     Attributes:
@@ -60,16 +59,14 @@ class RunWarning:
         count: how many times this place did it.
     """
 
-    kind: str
-    message: str
-    cog: int
-    addr: int
-    cycle: int
-    path: Optional[str] = None
-    line: Optional[int] = None
-    column: Optional[int] = None
-    source_line: Optional[str] = None
-    count: int = 1
+    _fields = ("kind", "message", "cog", "addr", "cycle", "path", "line", "column", "source_line", "count")
+
+    def __init__(self, kind: str, message: str, cog: int, addr: int, cycle: int, path: Optional[str] = None,
+                 line: Optional[int] = None, column: Optional[int] = None, source_line: Optional[str] = None,
+                 count: int = 1):
+        self.kind, self.message, self.cog, self.addr, self.cycle = kind, message, cog, addr, cycle
+        self.path, self.line, self.column, self.source_line = path, line, column, source_line
+        self.count = count
 
     def diagnostic(self, severity: str = "warning") -> Diagnostic:
         """As a :class:`Diagnostic`: ``file:line:col: warning: ...`` with the source line and a caret."""

@@ -23,8 +23,9 @@ This module is a shared leaf: it imports nothing from the project.
 from __future__ import annotations
 
 import io
-from dataclasses import dataclass, field
 from typing import Iterable, Optional, TextIO
+
+from .records import Record
 
 __all__ = ["PinTrace", "TraceFormatError", "read_log", "vcd_timescale"]
 
@@ -52,8 +53,7 @@ def vcd_timescale(clock_hz: int) -> tuple[str, int]:
     return "1 fs", max(1, round(10**15 / clock_hz))
 
 
-@dataclass
-class PinTrace:
+class PinTrace(Record):
     """Every change of the pins with the cycle it happened at.
 
     Args:
@@ -75,15 +75,17 @@ class PinTrace:
     {0: 1}
     """
 
-    clock_hz: int
-    changes: list = field(default_factory=list)
-    end_cycle: int = 0
-    pin_count: int = 32
-    pin_names: dict = field(default_factory=dict)
+    _fields = ("clock_hz", "changes", "end_cycle", "pin_count", "pin_names")
 
-    def __post_init__(self):
-        if not self.clock_hz > 0:       # every time in seconds divides by it
-            raise ValueError(f"a trace's clock must be above 0 Hz, not {self.clock_hz!r}")
+    def __init__(self, clock_hz: int, changes: Optional[list] = None, end_cycle: int = 0, pin_count: int = 32,
+                 pin_names: Optional[dict] = None):
+        if not clock_hz > 0:            # every time in seconds divides by it
+            raise ValueError(f"a trace's clock must be above 0 Hz, not {clock_hz!r}")
+        self.clock_hz = clock_hz
+        self.changes = [] if changes is None else changes
+        self.end_cycle = end_cycle
+        self.pin_count = pin_count
+        self.pin_names = {} if pin_names is None else pin_names
 
     # ------------------------------------------------------------------ access
     def record(self, cycle: int, dir_mask: int, out_mask: int) -> None:

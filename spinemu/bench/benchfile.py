@@ -38,7 +38,6 @@ from __future__ import annotations
 
 import importlib
 import importlib.util
-import inspect
 import os
 import re
 import sys
@@ -244,6 +243,8 @@ def _part_class(table: dict, path: str, lines: _Lines, keys: dict, head, folder:
 
 
 def _check_parameters(cls, kwargs: dict, path: str, lines: _Lines, keys: dict, head) -> None:
+    import inspect                  # (here: it is slow to import, and only bench files need it)
+
     sig = inspect.signature(cls.__init__)
     params = [p for p in list(sig.parameters.values())[1:] if p.kind in (p.KEYWORD_ONLY, p.POSITIONAL_OR_KEYWORD)]
     names = [p.name for p in params]

@@ -35,14 +35,14 @@ from __future__ import annotations
 import copy
 from bisect import bisect_left, bisect_right
 from collections import deque
-from dataclasses import dataclass
 from typing import Optional
+
+from ..records import FrozenRecord
 
 __all__ = ["Part", "ReactivePart", "PartWarning", "pins_mask", "check_pin"]
 
 
-@dataclass(frozen=True)
-class PartWarning:
+class PartWarning(FrozenRecord):
     """A protocol violation or misuse a part saw.
 
     Attributes:
@@ -52,10 +52,10 @@ class PartWarning:
         message: what happened.
     """
 
-    cycle: int
-    seconds: float
-    part: str
-    message: str
+    _fields = ("cycle", "seconds", "part", "message")
+
+    def __init__(self, cycle: int, seconds: float, part: str, message: str):
+        self.cycle, self.seconds, self.part, self.message = cycle, seconds, part, message
 
     def __str__(self) -> str:
         return f"{self.part}: {self.message} (at {self.seconds:.6f} s, cycle {self.cycle:,})"

@@ -32,12 +32,12 @@ cog and lock management, and the run's result.
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
 from typing import Callable, Optional
 
 from ..diagnostics import EmulationError
 from ..bench.inputs import make_input_model
 from ..image import BOOT_FRAME, FALLBACK_CLOCK_HZ, HUB_SIZE, ImageHeader, load_image
+from ..records import Record
 from ..trace import PinTrace
 from .ahead import RunAhead
 from .blocks import HOT as BLOCK_THRESHOLD
@@ -73,8 +73,7 @@ def _spinsim_phase(cog_id: int) -> int:
     return (8 + 4 * (cog_id >> 1)) & 15
 
 
-@dataclass
-class RunResult:
+class RunResult(Record):
     """What a run produced.
 
     Attributes:
@@ -94,14 +93,16 @@ class RunResult:
             (:class:`spinemu.runtime_warnings.RunWarning`, one per place).
     """
 
-    trace: PinTrace
-    hub: bytes
-    end_cycle: int
-    reason: str
-    cog_events: list = field(default_factory=list)
-    warnings: list = field(default_factory=list)
-    stats: dict = field(default_factory=dict)
-    runtime_warnings: list = field(default_factory=list)
+    _fields = ("trace", "hub", "end_cycle", "reason", "cog_events", "warnings", "stats", "runtime_warnings")
+
+    def __init__(self, trace: PinTrace, hub: bytes, end_cycle: int, reason: str, cog_events: Optional[list] = None,
+                 warnings: Optional[list] = None, stats: Optional[dict] = None,
+                 runtime_warnings: Optional[list] = None):
+        self.trace, self.hub, self.end_cycle, self.reason = trace, hub, end_cycle, reason
+        self.cog_events = [] if cog_events is None else cog_events
+        self.warnings = [] if warnings is None else warnings
+        self.stats = {} if stats is None else stats
+        self.runtime_warnings = [] if runtime_warnings is None else runtime_warnings
 
 
 class Chip(Pins, Listeners, RunAhead, Scheduler):
