@@ -13,7 +13,7 @@ Layout (Propeller Manual v1.2, "Main Memory"; P8X32A datasheet, "Main ROM")::
 
 The tables are computed here from the manual's definitions, rounded to the
 nearest integer; checksums of all 6,145 entries agree with the ROM that
-spinsim 0.99 carries (``tests/chip/test_rom.py``).
+spinsim 0.99 carries (``tests/chip/test_rom_and_timing.py``).
 
 ``$FFF9`` holds the Spin bytecodes a cog's top method returns into (the boot
 frame's return address): ``$3F $89`` (push register $1E9, the cog's own id)
@@ -24,6 +24,8 @@ ROM code is reproduced.
 from __future__ import annotations
 
 import math
+import sys
+from array import array
 from functools import lru_cache
 
 __all__ = ["ROM_BASE", "INTERPRETER_ENTRY", "RETURN_TO_STOP", "CHIP_VERSION", "build_rom"]
@@ -38,10 +40,6 @@ _STOP_BYTECODES = bytes([0x3F, 0x89, 0x21])
 CHIP_VERSION_ADDR, CHIP_VERSION = 0xFFFF, 1
 
 
-def _table(start: int, values) -> tuple[int, bytes]:
-    return start, b"".join(v.to_bytes(2, "little") for v in values)
-
-
 @lru_cache(maxsize=1)
 def build_rom() -> bytes:
     """The 32 KB from $8000 to $FFFF.
@@ -51,13 +49,14 @@ def build_rom() -> bytes:
     46340
     """
     rom = bytearray(0x8000)
-    parts = [
-        _table(0xC000, (round(math.log2(1 + i / 2048) * 65536) for i in range(2048))),
-        _table(0xD000, (round((2 ** (i / 2048) - 1) * 65536) for i in range(2048))),
-        _table(0xE000, (round(math.sin(i / 2048 * math.pi / 2) * 65535) for i in range(2049))),
-        (RETURN_TO_STOP, _STOP_BYTECODES),
-        (CHIP_VERSION_ADDR, bytes([CHIP_VERSION])),
-    ]
-    for addr, data in parts:
+    log2, sin, pi = math.log2, math.sin, math.pi
+    # the three tables follow each other: log at $C000, anti-log at $D000, sine at $E000
+    tables = array("H", [round(log2(1 + i / 2048) * 65536) for i in range(2048)])
+    tables.extend([round((2 ** (i / 2048) - 1) * 65536) for i in range(2048)])
+    tables.extend([round(sin(i / 2048 * pi / 2) * 65535) for i in range(2049)])
+    if sys.byteorder != "little":
+        tables.byteswap()
+    for addr, data in ((0xC000, tables.tobytes()), (RETURN_TO_STOP, _STOP_BYTECODES),
+                       (CHIP_VERSION_ADDR, bytes([CHIP_VERSION]))):
         rom[addr - ROM_BASE: addr - ROM_BASE + len(data)] = data
     return bytes(rom)
