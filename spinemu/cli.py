@@ -732,18 +732,21 @@ class _Parser(argparse.ArgumentParser):
         return self.formatter_class(prog=self.prog, width=(int(columns) or 80) - 2)
 
 
-def build_parser() -> argparse.ArgumentParser:
-    p = _Parser(
-        prog="spinemu",
-        description="Compile, run, trace and translate Propeller 1 Spin programs; run BASIC Stamp 2 PBASIC.",
-        epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--version", action="version", version=f"spinemu {__version__}")
-    p.add_argument("--traceback", action="store_true",
-                   help="on an internal error (exit status 70), print the Python traceback "
-                        "(same as the environment variable SPINEMU_TRACEBACK=1)")
-    sub = p.add_subparsers(dest="command", metavar="COMMAND")
+#: the commands, in the order the help lists them
+COMMANDS = {
+    "compile": "compile Spin to a Propeller image (byte-identical with OpenSpin)",
+    "run": "run a .spin, .binary, .eeprom or .bs2 program and record its pins",
+    "disasm": "list an image: header, objects, bytecode, PASM",
+    "translate": "translate Spin to readable Python",
+    "trace": "look at, compare, convert, plot and decode pin traces (log files)",
+    "sidebyside": "compare two traces as stepper step sequences (e.g. BS2 vs Propeller)",
+    "debug": "debug a Spin program (and its PASM cogs): breakpoints, stepping, call stacks, variables",
+    "profile": "cycles per Spin line and per method, per cog (waits apart from work)",
+}
 
-    c = sub.add_parser("compile", help="compile Spin to a Propeller image (byte-identical with OpenSpin)",
+
+def _add_compile_parser(sub) -> None:
+    c = sub.add_parser("compile", help=COMMANDS["compile"],
                        description="Compile a Spin program (and its OBJ children) to a Propeller 1 image.")
     c.add_argument("source", metavar="SRC.spin")
     c.add_argument("-o", "--output", metavar="OUT.binary", help="image file (default: SRC.binary)")
@@ -754,7 +757,9 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("-q", "--quiet", action="store_true", help="print nothing but errors")
     c.set_defaults(func=cmd_compile)
 
-    r = sub.add_parser("run", help="run a .spin, .binary, .eeprom or .bs2 program and record its pins",
+
+def _add_run_parser(sub) -> None:
+    r = sub.add_parser("run", help=COMMANDS["run"],
                        description="Run a program on the emulated chip and record every pin change.\n"
                                    "Spin sources are compiled first. A run ends when every cog has "
                                    "stopped, when nothing can change any more (every cog waits on pins "
@@ -808,7 +813,9 @@ def build_parser() -> argparse.ArgumentParser:
                         "'spinemu profile' for JSON, CSV and an annotated listing)")
     r.set_defaults(func=cmd_run)
 
-    d = sub.add_parser("disasm", help="list an image: header, objects, bytecode, PASM",
+
+def _add_disasm_parser(sub) -> None:
+    d = sub.add_parser("disasm", help=COMMANDS["disasm"],
                        description="Disassemble a Propeller image (.binary/.eeprom from any compiler, or a .spin "
                                    "source, compiled first and listed with its source lines).")
     d.add_argument("target", metavar="TARGET")
@@ -816,7 +823,9 @@ def build_parser() -> argparse.ArgumentParser:
     _obj_search_option(d)
     d.set_defaults(func=cmd_disasm)
 
-    t = sub.add_parser("translate", help="translate Spin to readable Python",
+
+def _add_translate_parser(sub) -> None:
+    t = sub.add_parser("translate", help=COMMANDS["translate"],
                        description="Translate a Spin program and its objects to Python modules that run on the same chip model.")
     t.add_argument("source", metavar="SRC.spin")
     t.add_argument("-o", "--output", metavar="OUT_DIR", help="folder for the generated modules")
@@ -825,7 +834,9 @@ def build_parser() -> argparse.ArgumentParser:
     t.add_argument("-q", "--quiet", action="store_true")
     t.set_defaults(func=cmd_translate)
 
-    tr = sub.add_parser("trace", help="look at, compare, convert, plot and decode pin traces (log files)",
+
+def _add_trace_parser(sub) -> None:
+    tr = sub.add_parser("trace", help=COMMANDS["trace"],
                         description="Tools for '<cycle> <dir> <out>' trace logs written by 'spinemu run --trace'.")
     clock = _Parser(add_help=False)
     clock.add_argument("--clock", type=_positive_int, default=CLOCK_DEFAULT,
@@ -867,7 +878,9 @@ def build_parser() -> argparse.ArgumentParser:
     add_decode_parser(ts, [clock])
     tr.set_defaults(func=cmd_trace)
 
-    s = sub.add_parser("sidebyside", help="compare two traces as stepper step sequences (e.g. BS2 vs Propeller)",
+
+def _add_sidebyside_parser(sub) -> None:
+    s = sub.add_parser("sidebyside", help=COMMANDS["sidebyside"],
                        description="Decode the coil patterns of two traces and compare the step sequences.")
     s.add_argument("left")
     s.add_argument("right")
@@ -878,9 +891,32 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--right-clock", type=_positive_int, default=CLOCK_DEFAULT)
     s.add_argument("--steps", type=_positive_int, metavar="N", help="compare only the first N steps")
     s.set_defaults(func=cmd_sidebyside)
-    _add_debug_parser(sub)
-    _add_profile_parser(sub)
+
+
+def build_parser(command: Optional[str] = None) -> argparse.ArgumentParser:
+    """The command line's parser; with ``command``, only that command's options are added
+    (building every command's costs a run's start-up a few milliseconds)."""
+    p = _Parser(
+        prog="spinemu",
+        description="Compile, run, trace and translate Propeller 1 Spin programs; run BASIC Stamp 2 PBASIC.",
+        epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--version", action="version", version=f"spinemu {__version__}")
+    p.add_argument("--traceback", action="store_true",
+                   help="on an internal error (exit status 70), print the Python traceback "
+                        "(same as the environment variable SPINEMU_TRACEBACK=1)")
+    sub = p.add_subparsers(dest="command", metavar="COMMAND")
+    for name, add in _ADDERS.items():
+        if command is None or name == command:
+            add(sub)
+        else:       # (listed in the help; its options are added only when it is the command given)
+            sub.add_parser(name, help=COMMANDS[name])
     return p
+
+
+#: what adds each command's parser (with all its options)
+_ADDERS = {"compile": _add_compile_parser, "run": _add_run_parser, "disasm": _add_disasm_parser,
+           "translate": _add_translate_parser, "trace": _add_trace_parser, "sidebyside": _add_sidebyside_parser,
+           "debug": _add_debug_parser, "profile": _add_profile_parser}
 
 
 # ----------------------------------------------------------------------------- entry
@@ -889,7 +925,8 @@ def _run_command(argv: Optional[Sequence[str]], stdout: TextIO, stderr: TextIO, 
 
     ``state`` receives the command's name as soon as it is known (for the guard's message).
     """
-    parser = build_parser()
+    command = next((a for a in argv if not a.startswith("-")), None)     # (no global option takes a value)
+    parser = build_parser(command)
     try:
         old = sys.stdout, sys.stderr
         sys.stdout, sys.stderr = stdout, stderr  # argparse prints help/usage there

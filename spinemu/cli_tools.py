@@ -59,7 +59,7 @@ def cmd_profile(args, out) -> int:
 
 def _add_profile_parser(sub) -> None:
     cli = _cli()
-    p = sub.add_parser("profile", help="cycles per Spin line and per method, per cog (waits apart from work)",
+    p = sub.add_parser("profile", help=cli.COMMANDS["profile"],
                        description="Run a program under the cycle profiler: every cycle of every cog is "
                                    "charged to the Spin line (and method) of the bytecode that spent it, as "
                                    "work or as waiting (WAITCNT, WAITPEQ/WAITPNE, WAITVID). Each cog's "
@@ -160,8 +160,7 @@ def cmd_debug(args, out) -> int:
 
 def _add_debug_parser(sub) -> None:
     cli = _cli()
-    d = sub.add_parser("debug",
-                       help="debug a Spin program (and its PASM cogs): breakpoints, stepping, call stacks, variables",
+    d = sub.add_parser("debug", help=cli.COMMANDS["debug"],
                        description="Run a Spin program under the debugger: step a cog by Spin line or "
                                    "bytecode, a PASM cog by instruction; stop on a line, a DAT label or "
                                    "a PASM cog address, a pin change, a write to a variable (by Spin or "

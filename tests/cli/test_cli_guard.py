@@ -53,7 +53,7 @@ def test_a_subcommand_is_named_with_its_action(monkeypatch):
 
 
 def test_an_exception_before_the_command_is_known_is_still_caught(monkeypatch):
-    def boom():
+    def boom(*args):
         raise RuntimeError("parser broke")
     monkeypatch.setattr(cli, "build_parser", boom)
     code, _, err = run("run", "x.spin")
