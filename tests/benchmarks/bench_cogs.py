@@ -129,7 +129,8 @@ def child(cmd, n):
     for _ in range(n):
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
         t0 = time.perf_counter()
-        subprocess.run(cmd, check=True, capture_output=True, env=env)
+        # (in another folder: from the checkout, ``-m spinemu`` would import the source tree, not the install)
+        subprocess.run(cmd, check=True, capture_output=True, env=env, cwd=tempfile.gettempdir())
         wall = time.perf_counter() - t0
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
         cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)

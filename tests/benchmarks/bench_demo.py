@@ -68,7 +68,8 @@ def end_to_end(n: int):
         for _ in range(n):
             before = resource.getrusage(resource.RUSAGE_CHILDREN)
             t0 = time.perf_counter()
-            subprocess.run(cmd, check=True, capture_output=True, env=env)
+            # (in a folder of its own: from the checkout, ``-m spinemu`` would import the source tree)
+            subprocess.run(cmd, check=True, capture_output=True, env=env, cwd=tmp)
             wall = time.perf_counter() - t0
             after = resource.getrusage(resource.RUSAGE_CHILDREN)
             cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
