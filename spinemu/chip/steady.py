@@ -444,7 +444,7 @@ class _Recorder:
         self.rows: list = []
         # per anchor visit: (row index, t, cog states, pin events so far, every cog's time)
         self.hits: list = []
-        self.sigs: list = []        # per anchor interval: its structure
+        self.sigs: list = []        # per anchor interval: its structure (made when first compared)
         self.anchor = None
         self.tried: set = set()
         self.by_snap: dict = {}     # cog states -> the visits (indices into hits) in them
@@ -454,15 +454,13 @@ class _Recorder:
         t = c.t
         snap = _snapshot(chip)
         if hits:
-            start, t0 = hits[-1][0], hits[-1][1]
-            self.sigs.append(tuple((r[0], r[1], r[2], r[3] - t0, r[6] - r[5]) for r in rows[start:]))
+            self.sigs.append(None)
         hits.append((len(rows), t, snap, len(chip.pin_events), _times(chip)))
         j = len(hits) - 1
         if snap is None or j < 2:
             return
         same = self.by_snap.setdefault(snap, set())    # the earlier visits in this state
         same.add(j)
-        sigs = self.sigs
         tried = self.tried
         for n in range(1, j // 2 + 1):
             if n in tried or j - n not in same or j - 2 * n not in same:
@@ -471,11 +469,28 @@ class _Recorder:
             if P != hits[j - n][1] - hits[j - 2 * n][1] or P % 16 or P <= 0:
                 continue
             roles = _roles(hits[j - 2 * n], hits[j - n], hits[j])
-            if roles is None or sigs[j - n:j] != sigs[j - 2 * n:j - n]:
+            if roles is None or not self._same_intervals(j - 2 * n, j - n, n):
                 continue
             if self.steady.try_skip(chip, self, j, n, P, roles):
                 raise Halted(_STEADY)
             tried.add(n)            # (once per length: a failed proof costs more than a missed skip)
+
+    def _sig(self, k: int) -> tuple:
+        """The structure of anchor interval ``k``: per bytecode its cog, address, opcode, time from the
+        interval's start and number of hub accesses."""
+        sig = self.sigs[k]
+        if sig is None:
+            (start, t0), end = self.hits[k][:2], self.hits[k + 1][0]
+            sig = self.sigs[k] = tuple((r[0], r[1], r[2], r[3] - t0, r[6] - r[5]) for r in self.rows[start:end])
+        return sig
+
+    def _same_intervals(self, a: int, b: int, n: int) -> bool:
+        """Do the ``n`` intervals from ``a`` on have the structure of the ``n`` from ``b`` on?"""
+        sig = self._sig
+        for i in range(n):
+            if sig(a + i) != sig(b + i):
+                return False
+        return True
 
 
 def _snapshot(chip):
@@ -671,6 +686,7 @@ class SteadySkip:
         rows, log, hits = rec.rows, rec.log, rec.hits
         H = chip.handlers
         anchor = anchor_pc = None
+        stop = min(BUDGET_BYTECODES, BUDGET_INTERVAL + 1)     # (before the first visit of the anchor)
         running: list = []
         chip._cogs_changed = True
         chip.run_limit = limit
@@ -701,12 +717,12 @@ class SteadySkip:
             chip.now = t
             if pc == anchor_pc and c is anchor:
                 rec._hit(chip, c)
+                # the budget: bytecodes in all, anchor visits, bytecodes until the next visit
+                stop = 0 if len(hits) >= BUDGET_HITS else min(BUDGET_BYTECODES, len(rows) + BUDGET_INTERVAL + 1)
             elif anchor is None:
                 anchor, anchor_pc = c, pc
                 rec.anchor = (c.id, pc)
-            n = len(rows)
-            if n >= BUDGET_BYTECODES or len(hits) >= BUDGET_HITS \
-                    or n - (hits[-1][0] if hits else 0) > BUDGET_INTERVAL:
+            if len(rows) >= stop:
                 raise Halted(_BUDGET)
             op = mem[pc]
             row = [c.id, pc, op, t, c.sp, len(log), 0]
