@@ -32,7 +32,6 @@ Writing one: subclass :class:`Part` (or :class:`ReactivePart`), give it a
 """
 from __future__ import annotations
 
-import copy
 from bisect import bisect_left, bisect_right
 from collections import deque
 from typing import Optional
@@ -232,10 +231,12 @@ class ReactivePart(Part):
 
     def save(self):
         """The part's state for a checkpoint (default: a deep copy of ``self.s``)."""
-        return copy.deepcopy(self.s)
+        from copy import deepcopy      # (here: only checkpoints need it, and it is slow to import)
+        return deepcopy(self.s)
 
     def restore(self, state) -> None:
-        self.s = copy.deepcopy(state)
+        from copy import deepcopy
+        self.s = deepcopy(state)
 
     def output(self, cycle: int, levels: int) -> None:
         """From ``cycle`` on, this part outputs ``levels`` (replacing what it had predicted from there on)."""
