@@ -130,13 +130,17 @@ class PinTrace(Record):
     def edge_counts(self) -> dict[int, int]:
         """Rising plus falling edges of each driven pin (z changes not counted)."""
         counts: dict[int, int] = {}
+        pins = (1 << self.pin_count) - 1
         prev = None
         for _, d, o in self.changes:
             level = d & o
             if prev is not None:
-                for p in range(self.pin_count):
-                    if (d >> p & 1) and (prev[0] >> p & 1) and ((level ^ prev[1]) >> p & 1):
-                        counts[p] = counts.get(p, 0) + 1
+                edges = d & prev[0] & (level ^ prev[1]) & pins     # driven before and after, level changed
+                while edges:
+                    low = edges & -edges
+                    p = low.bit_length() - 1
+                    counts[p] = counts.get(p, 0) + 1
+                    edges ^= low
             prev = (d, level)
         return dict(sorted(counts.items()))
 
