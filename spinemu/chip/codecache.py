@@ -27,6 +27,7 @@ __all__ = ["CodeCache", "for_image", "cache_dir", "KEEP"]
 
 #: files (programs) kept per cache directory
 KEEP = 256
+_FORMAT = 2         # (1: the code objects alone)
 
 
 def cache_dir() -> Optional[str]:
@@ -50,21 +51,35 @@ def for_image(image: bytes) -> Optional["CodeCache"]:
 
 
 class CodeCache:
-    """Code objects by ``(source, name)``, loaded from and saved to ``path``."""
+    """Code objects by ``(source, name)``, and generated blocks by what they were generated from
+    (:meth:`blocks_at`), loaded from and saved to ``path``."""
 
     def __init__(self, path: str):
         self.path = path
         self.codes: dict = {}
+        #: (address, variant and the compiler's settings) -> [(inputs, generated block)]: see blocks.py
+        self.blocks: dict = {}
         self.hits = self.misses = 0
         self._dirty = False
         try:
             with open(path, "rb") as f:
-                codes = marshal.loads(f.read())
-            if isinstance(codes, dict):
-                self.codes = codes
+                saved = marshal.loads(f.read())
+            if isinstance(saved, tuple) and len(saved) == 3 and saved[0] == _FORMAT:
+                self.codes, self.blocks = saved[1], saved[2]
                 os.utime(path)      # (recently used: pruned last)
         except Exception:           # missing, damaged, from another Python: start empty
-            self.codes = {}
+            self.codes, self.blocks = {}, {}
+
+    def blocks_at(self, key) -> list:
+        """The blocks generated at ``key`` (a list to look through, and to add a new one to)."""
+        found = self.blocks.get(key)
+        if found is None:
+            found = self.blocks[key] = []
+        return found
+
+    def added_block(self) -> None:
+        """A block was added to a :meth:`blocks_at` list: save it with the rest."""
+        self._dirty = True
 
     def compile(self, src: str, name: str):
         """``compile(src, name, "exec")``, from the cache when it has it."""
@@ -90,7 +105,7 @@ class CodeCache:
             os.makedirs(d, exist_ok=True)
             fd, tmp = create_beside(self.path)
             with os.fdopen(fd, "wb") as f:
-                f.write(marshal.dumps(self.codes))
+                f.write(marshal.dumps((_FORMAT, self.codes, self.blocks)))
             os.replace(tmp, self.path)
             self._dirty = False
             files = [os.path.join(d, n) for n in os.listdir(d) if n.endswith(".marshal")]
