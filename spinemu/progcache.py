@@ -11,8 +11,9 @@ compilation would produce.
 That is decided as ``make`` would, but by contents rather than times:
 
 * the command must be the same: the top file's path as given, the working
-  folder, the ``-L`` folders, the ``-D`` names, ``SPINEMU_PATH`` and the
-  spinemu version;
+  folder, the ``-L`` folders, the ``-D`` names, ``SPINEMU_PATH`` (and on
+  Windows the program folders) and the compiler: spinemu's version and the
+  size and time of each of its modules and of its grammar;
 * every file the compilation read (each object's source, each DAT ``file``,
   the library namesakes an OBJ hint compares) must have the same size and
   CRC-32 (or still be missing);
@@ -84,10 +85,39 @@ def _fingerprint_dir(path: str):
     return len(names), zlib.crc32("\0".join(names).encode("utf-8", "surrogateescape"))
 
 
+#: the modules (besides the two packages) whose code makes a compiled program
+_COMPILER_MODULES = ("bytecode.py", "image.py", "linetable.py", "debuginfo.py", "diagnostics.py", "messages.py",
+                     "records.py", "progcache.py")
+
+
+def _compiler_stamp() -> int:
+    """A checksum of the size and time of every file of the compiler (its modules and its grammar), so that
+    a changed compiler (a new version, or a checkout being worked on) compiles anew."""
+    pkg = os.path.dirname(os.path.abspath(__file__))
+    files = [os.path.join(pkg, name) for name in _COMPILER_MODULES]
+    files += [os.path.join(pkg, "grammars", "spin.lark"), os.path.join(os.path.dirname(pkg), "grammars", "spin.lark")]
+    for sub in ("frontend", "compiler"):
+        try:
+            files += [e.path for e in os.scandir(os.path.join(pkg, sub)) if e.name.endswith(".py")]
+        except OSError:
+            pass
+    stamps = []
+    for f in sorted(files):
+        try:
+            st = os.stat(f)
+            stamps.append(f"{f}:{st.st_size}:{st.st_mtime_ns}")
+        except OSError:
+            stamps.append(f"{f}:-")
+    return zlib.crc32("\n".join(stamps).encode("utf-8", "surrogateescape"))
+
+
 def _key(path: str, include_dirs, defines) -> tuple:
     from . import __version__
-    return (_FORMAT, __version__, os.fspath(path), os.getcwd(),
-            tuple(os.path.abspath(d) for d in include_dirs), tuple(defines), os.environ.get("SPINEMU_PATH"))
+    env = os.environ
+    return (_FORMAT, __version__, _compiler_stamp(), os.fspath(path), os.getcwd(),
+            tuple(os.path.abspath(d) for d in include_dirs), tuple(defines), env.get("SPINEMU_PATH"),
+            # (where the installed tools' library folders are looked for on Windows)
+            tuple(env.get(v) for v in ("ProgramFiles", "ProgramFiles(x86)", "ProgramW6432")))
 
 
 def _entry_path(key: tuple):

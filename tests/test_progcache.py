@@ -139,3 +139,29 @@ def test_cli_run_from_the_cache_prints_the_hints_and_the_same_trace(tmp_path, ca
     assert "child.spin" in outs[0] and outs[0] == outs[1]
     assert (tmp_path / "t0.log").read_text() == (tmp_path / "t1.log").read_text()
     assert list(cache.rglob("programs-*/*.pickle"))
+
+
+def test_a_changed_compiler_compiles_anew(tmp_path, cache, monkeypatch):
+    from spinemu import progcache
+
+    path = _program(tmp_path / "src")
+    compile_cached(path)
+    assert isinstance(compile_cached(path), CachedProgram)
+    stamp = progcache._compiler_stamp()
+    monkeypatch.setattr(progcache, "_compiler_stamp", lambda: stamp + 1)     # a module of it was edited
+    assert not isinstance(compile_cached(path), CachedProgram)
+
+
+def test_the_compiler_stamp_follows_its_files():
+    from spinemu import progcache
+
+    pkg = os.path.dirname(progcache.__file__)
+    target = os.path.join(pkg, "frontend", "limits.py")
+    before = progcache._compiler_stamp()
+    st = os.stat(target)
+    try:
+        os.utime(target, ns=(st.st_atime_ns, st.st_mtime_ns + 1_000_000_000))
+        assert progcache._compiler_stamp() != before
+    finally:
+        os.utime(target, ns=(st.st_atime_ns, st.st_mtime_ns))
+    assert progcache._compiler_stamp() == before

@@ -1,11 +1,11 @@
-"""The ``>>>`` examples in the docstrings of the debug-info, runtime-warning and tool modules run."""
+"""The ``>>>`` examples in the docstrings of the debug-info, runtime-warning, record and tool modules run."""
 import doctest
 import importlib
 
 import pytest
 
 MODULES = ["spinemu.debuginfo", "spinemu.runtime_warnings", "spinemu.chip.checks", "spinemu.debugger.frames",
-           "spinemu.debugger.expr", "spinemu.debugger.commands"]
+           "spinemu.debugger.expr", "spinemu.debugger.commands", "spinemu.records"]
 
 
 @pytest.mark.parametrize("name", MODULES)
