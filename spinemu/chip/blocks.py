@@ -243,6 +243,8 @@ class _Block:
 
 
 _GENERATOR_KEY = []
+#: generated blocks kept in the code cache per start address and settings (the oldest go first)
+_KEEP_PER_START = 8
 
 
 def _generator_key() -> int:
@@ -335,6 +337,8 @@ class BlockCompiler(DataOps):
             else:
                 made = self._generate(pc, private)
                 if made is not None:
+                    if len(known) >= _KEEP_PER_START:       # (code that keeps changing there)
+                        del known[0]
                     known.append((self._inputs(pc, made[-1]), made))
                     cache.added_block()
         if made is None:
