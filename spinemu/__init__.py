@@ -29,7 +29,6 @@ Everything but the error and trace types is imported on first use, so
 from __future__ import annotations
 
 import importlib
-from typing import Optional
 
 from .diagnostics import SpinError
 from .trace import PinTrace, read_log
@@ -91,7 +90,7 @@ def compile_spin(path, include_dirs=()):
     return compile_file(str(path), include_dirs=list(include_dirs))
 
 
-def run_spin(target, *, cycles: Optional[int] = None, seconds: Optional[float] = None,
+def run_spin(target, *, cycles: int | None = None, seconds: float | None = None,
              compat: str = "spinsim", inputs=None, include_dirs=(), parts=()):
     """Compile (if ``target`` is a ``.spin`` file) and run a Propeller program.
 

@@ -61,7 +61,6 @@ This module is a shared leaf: it imports nothing from the project.
 """
 from __future__ import annotations
 
-from typing import Optional
 
 from .records import FrozenRecord
 
@@ -100,7 +99,7 @@ class Opcode(FrozenRecord):
     _fields = ("code", "mnemonic", "fmt", "pops", "pushes", "handler", "doc", "size", "base", "indexed",
                "access", "var_offset")
 
-    def __init__(self, code: int, mnemonic: str, fmt: str, pops: Optional[int], pushes: Optional[int],
+    def __init__(self, code: int, mnemonic: str, fmt: str, pops: int | None, pushes: int | None,
                  handler: str, doc: str, size: int = 0, base: str = "", indexed: bool = False,
                  access: str = "", var_offset: int = -1):
         self.code, self.mnemonic, self.fmt, self.pops, self.pushes = code, mnemonic, fmt, pops, pushes
@@ -167,7 +166,7 @@ class AssignOp(FrozenRecord):
 
     _fields = ("code", "mnemonic", "push", "size", "math", "has_jump")
 
-    def __init__(self, code: int, mnemonic: str, push: bool, size: int = 0, math: Optional[MathOp] = None,
+    def __init__(self, code: int, mnemonic: str, push: bool, size: int = 0, math: MathOp | None = None,
                  has_jump: bool = False):
         self.code, self.mnemonic, self.push = code, mnemonic, push
         self.size = size            # inc/dec: 0 = bit field, 1/2/4 bytes
@@ -188,7 +187,7 @@ _SIMPLE_ASSIGN = {0x00: "WRITE", 0x02: "REPEAT", 0x06: "REPEAT_STEP", 0x08: "RAN
 _INCDEC_SIZE = {0: 0, 1: 1, 2: 2, 3: 4}
 
 
-def decode_assign(byte: int) -> Optional[AssignOp]:
+def decode_assign(byte: int) -> AssignOp | None:
     """Decode an assignment-operator byte; ``None`` for unused values.
 
     >>> decode_assign(0x2E).text
@@ -302,7 +301,7 @@ _ACCESS_DOC = {"PUSH": "push", "POP": "pop into", "USING": "assignment operator 
 
 
 def _build() -> list[Opcode]:
-    table: list[Optional[Opcode]] = [None] * 256
+    table: list[Opcode | None] = [None] * 256
     for code, mnem, fmt, pops, pushes, doc in _SPECIAL:
         handler = "op_unknown" if mnem.startswith("UNKNOWN") else "op_" + mnem.lower()
         table[code] = Opcode(code, mnem, fmt, pops, pushes, handler, doc)
@@ -408,7 +407,7 @@ for _c in range(0x80):
     _MASKS.setdefault(mask_value(_c), _c)
 
 
-def mask_code(value: int) -> Optional[int]:
+def mask_code(value: int) -> int | None:
     """The PUSH_MASK operand for ``value`` (32-bit), or ``None``.
 
     >>> mask_code(4), mask_code(256), mask_code(5)

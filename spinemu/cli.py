@@ -18,7 +18,8 @@ import math
 import os
 import sys
 import time
-from typing import Optional, Sequence, TextIO
+from collections.abc import Sequence
+from io import TextIOBase
 
 from . import __version__
 from .cli_bench import RunBench, add_decode_parser, bench_options, chip_input_model, decode_command
@@ -157,7 +158,7 @@ class _Out:
     """stdout/stderr plus rich consoles on them (made when first used: importing rich
     costs a plain ``run`` a tenth of its start-up)."""
 
-    def __init__(self, stdout: TextIO, stderr: TextIO, quiet: bool = False):
+    def __init__(self, stdout: TextIOBase, stderr: TextIOBase, quiet: bool = False):
         self.stdout, self.stderr, self.quiet = stdout, stderr, quiet
         self._console = self._err_console = None
 
@@ -249,7 +250,7 @@ def _load_target(path: str, include_dirs, defines=(), cached: bool = False):
     return load_image(_read_bytes(path), path), None, None
 
 
-def _progress_callback(out: _Out, total: Optional[int], clock_hz: int, enabled: bool):
+def _progress_callback(out: _Out, total: int | None, clock_hz: int, enabled: bool):
     """A rich progress display on a terminal: a bar towards the cycle limit, or the
     simulated time so far when the run goes until every cog stops."""
     if not enabled or out.quiet or not out.stderr.isatty():
@@ -285,7 +286,7 @@ def _compat(args) -> str:
     return args.compat or "spinsim"
 
 
-def _run_limit(args, clock_hz: int) -> Optional[int]:
+def _run_limit(args, clock_hz: int) -> int | None:
     if args.cycles is not None:
         return args.cycles
     if args.seconds is not None:
@@ -579,7 +580,7 @@ def _load_trace(path: str, clock_hz: int):
         raise SpinError(e.message, path=path, line=e.line, column=1, source_line=e.text)
 
 
-def _pins(spec: Optional[str], option: str = "--pins", coils: bool = False):
+def _pins(spec: str | None, option: str = "--pins", coils: bool = False):
     """The pins of a ``--pins`` spec; ``coils``: exactly four different pins (a stepper's coils)."""
     if spec is None:
         return None
@@ -893,7 +894,7 @@ def _add_sidebyside_parser(sub) -> None:
     s.set_defaults(func=cmd_sidebyside)
 
 
-def build_parser(command: Optional[str] = None) -> argparse.ArgumentParser:
+def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     """The command line's parser; with ``command``, only that command's options are added
     (building every command's costs a run's start-up a few milliseconds)."""
     p = _Parser(
@@ -920,7 +921,7 @@ _ADDERS = {"compile": _add_compile_parser, "run": _add_run_parser, "disasm": _ad
 
 
 # ----------------------------------------------------------------------------- entry
-def _run_command(argv: Optional[Sequence[str]], stdout: TextIO, stderr: TextIO, state: dict) -> int:
+def _run_command(argv: Sequence[str] | None, stdout: TextIOBase, stderr: TextIOBase, state: dict) -> int:
     """Parse ``argv`` and run its command; expected errors become statuses 1 and 2.
 
     ``state`` receives the command's name as soon as it is known (for the guard's message).
@@ -962,7 +963,7 @@ def _run_command(argv: Optional[Sequence[str]], stdout: TextIO, stderr: TextIO, 
         return 130
 
 
-def _render_error(err: SpinError, target: Optional[str] = None) -> str:
+def _render_error(err: SpinError, target: str | None = None) -> str:
     """The error's diagnostics, with paths under the working directory shown relative to it.
 
     An image or run-time error that names no file (an image has no source lines) is about
@@ -996,8 +997,8 @@ _REPORT_HINT = ("this is a bug in spinemu, not in your input; please report it w
                 "the input files")
 
 
-def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
-         stderr: Optional[TextIO] = None) -> int:
+def main(argv: Sequence[str] | None = None, stdout: TextIOBase | None = None,
+         stderr: TextIOBase | None = None) -> int:
     """Run the command line ``argv`` and return the exit status.
 
     0: success; 1: an error in the input (rendered ``file:line:col: error: ...``);
@@ -1017,7 +1018,7 @@ def main(argv: Optional[Sequence[str]] = None, stdout: Optional[TextIO] = None,
         return _internal_error(e, argv, state.get("command"), stderr)
 
 
-def _internal_error(err: BaseException, argv: Sequence[str], command: Optional[str], stderr: TextIO) -> int:
+def _internal_error(err: BaseException, argv: Sequence[str], command: str | None, stderr: TextIOBase) -> int:
     """Report an unexpected exception (a bug) and return :data:`EXIT_INTERNAL`."""
     import traceback
 

@@ -12,7 +12,6 @@ program, and renders what the parts did.  The library behind it is
 from __future__ import annotations
 
 import time
-from typing import Optional
 
 from .diagnostics import SpinError, UsageError
 
@@ -51,7 +50,7 @@ class RunBench:
     """
 
     def __init__(self, args, out, *, clock_hz: int, pin_count: int, engine: str,
-                 eeprom_image: Optional[bytes] = None, session=None):
+                 eeprom_image: bytes | None = None, session=None):
         from .bench import Bench
         from .bench.board import BenchPinError
 

@@ -25,7 +25,7 @@ This module is a shared leaf: it imports nothing from the project.
 from __future__ import annotations
 
 import bisect
-from typing import Iterator, Optional
+from collections.abc import Iterator
 
 from .records import FrozenRecord, Record
 
@@ -64,7 +64,7 @@ class MethodDebug(Record):
     _fields = ("name", "public", "index", "path", "start", "end", "line", "slots")
 
     def __init__(self, name: str, public: bool, index: int, path: str, start: int, end: int, line: int,
-                 slots: Optional[list] = None):
+                 slots: list | None = None):
         self.name, self.public, self.index, self.path = name, public, index, path
         self.start, self.end, self.line = start, end, line
         self.slots = [] if slots is None else slots
@@ -86,7 +86,7 @@ class MethodDebug(Record):
         """Frame offset of the first local (past the result and the parameters)."""
         return 4 + 4 * self.nparams
 
-    def slot_at(self, offset: int) -> Optional[FrameSlot]:
+    def slot_at(self, offset: int) -> FrameSlot | None:
         """The named slot covering frame offset ``offset`` (bytes), if any."""
         for s in self.slots:
             if s.offset <= offset < s.offset + 4 * s.count:
@@ -126,8 +126,8 @@ class ObjectDebug(Record):
     _fields = ("path", "base", "size", "methods", "dat", "table_size", "code_start")
     _repr_fields = ("path", "base", "size", "table_size", "code_start")
 
-    def __init__(self, path: str, base: int, size: int, methods: Optional[list] = None,
-                 dat: Optional[list] = None, table_size: int = 4, code_start: int = 0):
+    def __init__(self, path: str, base: int, size: int, methods: list | None = None,
+                 dat: list | None = None, table_size: int = 4, code_start: int = 0):
         self.path, self.base, self.size = path, base, size
         self.methods = [] if methods is None else methods   # [MethodDebug] in table order
         self.dat = [] if dat is None else dat               # [Variable] with absolute addresses
@@ -150,8 +150,8 @@ class Instance(Record):
     _fields = ("name", "obj", "vbase", "var", "children")
     _repr_fields = ("name", "obj", "vbase")
 
-    def __init__(self, name: str, obj: ObjectDebug, vbase: int, var: Optional[list] = None,
-                 children: Optional[list] = None):
+    def __init__(self, name: str, obj: ObjectDebug, vbase: int, var: list | None = None,
+                 children: list | None = None):
         self.name, self.obj, self.vbase = name, obj, vbase
         self.var = [] if var is None else var
         self.children = [] if children is None else children
@@ -160,7 +160,7 @@ class Instance(Record):
         """VAR then DAT, as :class:`Variable` records."""
         return list(self.var) + list(self.obj.dat)
 
-    def find(self, name: str) -> Optional[Variable]:
+    def find(self, name: str) -> Variable | None:
         low = name.lower()
         for v in self.variables():
             if v.name.lower() == low:
@@ -204,7 +204,7 @@ class DebugInfo:
         self._area_starts = [a[0] for a in self._areas]
 
     # ------------------------------------------------------------------ places
-    def position(self, addr: int) -> Optional[tuple]:
+    def position(self, addr: int) -> tuple | None:
         """``(path, line, col)`` of the Spin source that made the byte at ``addr``."""
         i = bisect.bisect_right(self._starts, addr) - 1
         if i < 0:
@@ -212,7 +212,7 @@ class DebugInfo:
         start, end, path, line, col = self._positions[i]
         return (path, line, col) if start <= addr < end else None
 
-    def source_line(self, path: str, line: int) -> Optional[str]:
+    def source_line(self, path: str, line: int) -> str | None:
         lines = self.sources.get(path)
         if lines is None or not 1 <= line <= len(lines):
             return None
@@ -227,7 +227,7 @@ class DebugInfo:
                 last = (path, line)
 
     # ------------------------------------------------------------------ code
-    def method_at(self, addr: int) -> Optional[MethodDebug]:
+    def method_at(self, addr: int) -> MethodDebug | None:
         """The method whose code (or string pool) holds hub address ``addr``."""
         i = bisect.bisect_right(self._method_starts, addr) - 1
         if i < 0:
@@ -235,7 +235,7 @@ class DebugInfo:
         m = self.methods[i]
         return m if addr < m.end else None
 
-    def object_at(self, addr: int) -> Optional[ObjectDebug]:
+    def object_at(self, addr: int) -> ObjectDebug | None:
         for o in self.objects:
             if o.base <= addr < o.base + o.size:
                 return o
@@ -258,18 +258,18 @@ class DebugInfo:
             yield inst
             stack[0:0] = inst.children
 
-    def instance(self, pbase: int, vbase: int) -> Optional[Instance]:
+    def instance(self, pbase: int, vbase: int) -> Instance | None:
         """The instance a frame with these ``pbase`` and ``vbase`` belongs to."""
         return self._by_vbase.get((pbase, vbase))
 
-    def instance_named(self, name: str) -> Optional[Instance]:
+    def instance_named(self, name: str) -> Instance | None:
         low = name.lower()
         for inst in self.instances():
             if inst.name.lower() == low:
                 return inst
         return None
 
-    def variable_at(self, addr: int) -> Optional[tuple]:
+    def variable_at(self, addr: int) -> tuple | None:
         """``(Instance, Variable)`` of the VAR variable or DAT label whose bytes hold ``addr``.
 
         The innermost (smallest) one when several contain it.
@@ -285,7 +285,7 @@ class DebugInfo:
             i -= 1
         return best
 
-    def find_variable(self, dotted: str, context: Optional[Instance] = None) -> Optional[tuple]:
+    def find_variable(self, dotted: str, context: Instance | None = None) -> tuple | None:
         """``(Instance, Variable)`` for ``name`` or ``obj.name`` / ``obj.sub.name``.
 
         A plain name is looked up in ``context`` (default: the top object),

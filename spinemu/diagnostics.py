@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import re
 import unicodedata
-from typing import Iterable, Optional
+from collections.abc import Iterable
 
 from .records import FrozenRecord, Record
 
@@ -55,8 +55,8 @@ class Diagnostic(FrozenRecord):
 
     _fields = ("message", "path", "line", "column", "source_line", "severity", "length")
 
-    def __init__(self, message: str, path: Optional[str] = None, line: Optional[int] = None,
-                 column: Optional[int] = None, source_line: Optional[str] = None, severity: str = "error",
+    def __init__(self, message: str, path: str | None = None, line: int | None = None,
+                 column: int | None = None, source_line: str | None = None, severity: str = "error",
                  length: int = 1):
         self.message, self.path, self.line, self.column = message, path, line, column
         self.source_line, self.severity, self.length = source_line, severity, length
@@ -138,12 +138,12 @@ class SpinError(Exception):
         self,
         message: str = "",
         *,
-        path: Optional[str] = None,
-        line: Optional[int] = None,
-        column: Optional[int] = None,
-        source_line: Optional[str] = None,
+        path: str | None = None,
+        line: int | None = None,
+        column: int | None = None,
+        source_line: str | None = None,
         length: int = 1,
-        diagnostics: Optional[Iterable[Diagnostic]] = None,
+        diagnostics: Iterable[Diagnostic] | None = None,
     ):
         diags = list(diagnostics) if diagnostics else []
         if not diags:
@@ -160,15 +160,15 @@ class SpinError(Exception):
         return self.first.message
 
     @property
-    def path(self) -> Optional[str]:
+    def path(self) -> str | None:
         return self.first.path
 
     @property
-    def line(self) -> Optional[int]:
+    def line(self) -> int | None:
         return self.first.line
 
     @property
-    def column(self) -> Optional[int]:
+    def column(self) -> int | None:
         return self.first.column
 
     def render(self) -> str:
@@ -217,7 +217,7 @@ class DiagnosticBag(Record):
 
     _fields = ("items",)
 
-    def __init__(self, items: Optional[list] = None):
+    def __init__(self, items: list | None = None):
         self.items: list[Diagnostic] = [] if items is None else items
 
     def add(self, diag: Diagnostic) -> None:
@@ -260,7 +260,7 @@ def split_lines(text: str) -> list:
     return lines
 
 
-def source_line_at(text: str, line: int) -> Optional[str]:
+def source_line_at(text: str, line: int) -> str | None:
     """The 1-based ``line`` of ``text`` without its line ending, or ``None``.
 
     >>> source_line_at("a\\nbc\\n", 2)

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import itertools
 import os
-from typing import Optional
 
 __all__ = ["create_beside", "write_atomic", "cache_base"]
 
@@ -45,7 +44,7 @@ def write_atomic(path: str, data, binary: bool = True) -> None:
         raise
 
 
-def cache_base() -> Optional[str]:
+def cache_base() -> str | None:
     """Where spinemu keeps its caches (compiled blocks, compiled programs), or None when caching is off.
 
     ``$SPINEMU_CACHE_DIR``, else ``$XDG_CACHE_HOME/spinemu``, else ``~/.cache/spinemu``;

@@ -33,7 +33,7 @@ This module is a shared leaf: it imports nothing from the project but
 """
 from __future__ import annotations
 
-from typing import Callable, Optional
+from collections.abc import Callable
 
 from .diagnostics import Diagnostic, EmulationError
 from .records import Record
@@ -61,8 +61,8 @@ class RunWarning(Record):
 
     _fields = ("kind", "message", "cog", "addr", "cycle", "path", "line", "column", "source_line", "count")
 
-    def __init__(self, kind: str, message: str, cog: int, addr: int, cycle: int, path: Optional[str] = None,
-                 line: Optional[int] = None, column: Optional[int] = None, source_line: Optional[str] = None,
+    def __init__(self, kind: str, message: str, cog: int, addr: int, cycle: int, path: str | None = None,
+                 line: int | None = None, column: int | None = None, source_line: str | None = None,
                  count: int = 1):
         self.kind, self.message, self.cog, self.addr, self.cycle = kind, message, cog, addr, cycle
         self.path, self.line, self.column, self.source_line = path, line, column, source_line
@@ -104,8 +104,8 @@ class WarningLog:
         enabled: the kinds to report (default: all of :data:`KINDS`).
     """
 
-    def __init__(self, locate: Optional[Callable] = None, source_line: Optional[Callable] = None,
-                 werror: bool = False, sink: Optional[Callable] = None, enabled=KINDS):
+    def __init__(self, locate: Callable | None = None, source_line: Callable | None = None,
+                 werror: bool = False, sink: Callable | None = None, enabled=KINDS):
         self.locate = locate
         self.source_line = source_line
         self.werror = werror
@@ -119,7 +119,7 @@ class WarningLog:
     def wants(self, kind: str) -> bool:
         return kind in self.enabled
 
-    def warn(self, kind: str, message: str, cog: int, addr: int, cycle: int) -> Optional[RunWarning]:
+    def warn(self, kind: str, message: str, cog: int, addr: int, cycle: int) -> RunWarning | None:
         """Report ``message`` for the bytecode at ``addr``; returns the new warning, or ``None`` if that
         place has warned about ``kind`` before (its count goes up).
 

@@ -23,7 +23,8 @@ This module is a shared leaf: it imports nothing from the project.
 from __future__ import annotations
 
 import io
-from typing import Iterable, Optional, TextIO
+from collections.abc import Iterable
+from io import TextIOBase
 
 from .records import Record
 
@@ -77,8 +78,8 @@ class PinTrace(Record):
 
     _fields = ("clock_hz", "changes", "end_cycle", "pin_count", "pin_names")
 
-    def __init__(self, clock_hz: int, changes: Optional[list] = None, end_cycle: int = 0, pin_count: int = 32,
-                 pin_names: Optional[dict] = None):
+    def __init__(self, clock_hz: int, changes: list | None = None, end_cycle: int = 0, pin_count: int = 32,
+                 pin_names: dict | None = None):
         if not clock_hz > 0:            # every time in seconds divides by it
             raise ValueError(f"a trace's clock must be above 0 Hz, not {clock_hz!r}")
         self.clock_hz = clock_hz
@@ -150,12 +151,12 @@ class PinTrace(Record):
         self.write_log(buf)
         return buf.getvalue()
 
-    def write_log(self, fp: TextIO) -> None:
+    def write_log(self, fp: TextIOBase) -> None:
         """``<cycle> <dir> <out>`` lines, the format of the reference traces."""
         fp.writelines(f"{c} {d:08x} {o:08x}\n" for c, d, o in self.changes)
 
-    def write_vcd(self, fp: TextIO, *, module: str = "chip", date: Optional[str] = None,
-                  pins: Optional[Iterable[int]] = None) -> None:
+    def write_vcd(self, fp: TextIOBase, *, module: str = "chip", date: str | None = None,
+                  pins: Iterable[int] | None = None) -> None:
         """A value change dump of every pin that was ever driven.
 
         Args:

@@ -11,7 +11,7 @@ gives plain text for files, tests and notebooks.
 """
 from __future__ import annotations
 
-from typing import Iterable, Optional
+from collections.abc import Iterable
 
 from ..trace import PinTrace
 
@@ -71,8 +71,8 @@ def _level(d: int, o: int, pin: int) -> str:
     return HIGH if o >> pin & 1 else LOW
 
 
-def timeline_rows(trace: PinTrace, pins: Optional[Iterable[int]] = None, start: int = 0,
-                  end: Optional[int] = None, width: int = 64) -> dict[int, str]:
+def timeline_rows(trace: PinTrace, pins: Iterable[int] | None = None, start: int = 0,
+                  end: int | None = None, width: int = 64) -> dict[int, str]:
     """One string of ``width`` symbols per pin for the window ``[start, end)``.
 
     >>> t = PinTrace(1000, [(0, 0, 0), (10, 1, 0), (50, 1, 1)], end_cycle=100)
@@ -108,8 +108,8 @@ def timeline_rows(trace: PinTrace, pins: Optional[Iterable[int]] = None, start: 
     return rows
 
 
-def render_timeline(trace: PinTrace, pins: Optional[Iterable[int]] = None, start: int = 0,
-                    end: Optional[int] = None, width: int = 64, plain: bool = False):
+def render_timeline(trace: PinTrace, pins: Iterable[int] | None = None, start: int = 0,
+                    end: int | None = None, width: int = 64, plain: bool = False):
     """A timeline of the chosen pins, with the window's times underneath.
 
     Returns:
@@ -142,7 +142,7 @@ def render_timeline(trace: PinTrace, pins: Optional[Iterable[int]] = None, start
     return table
 
 
-def render_changes(trace: PinTrace, start: int = 0, end: Optional[int] = None, limit: int = 40,
+def render_changes(trace: PinTrace, start: int = 0, end: int | None = None, limit: int = 40,
                    plain: bool = False):
     """The first ``limit`` changes inside the window: time, cycle, masks and what moved."""
     end = trace.end_cycle if end is None else end

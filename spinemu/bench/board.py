@@ -27,7 +27,7 @@ protocol decoders.
 """
 from __future__ import annotations
 
-from typing import Iterable, Optional
+from collections.abc import Iterable
 
 from ..trace import PinTrace
 from .inputs import model_mask
@@ -47,7 +47,7 @@ class BenchPinError(ValueError):
         pin: the pin.
     """
 
-    def __init__(self, message: str, part=None, pin: Optional[int] = None):
+    def __init__(self, message: str, part=None, pin: int | None = None):
         super().__init__(message)
         self.part, self.pin = part, pin
 
@@ -92,7 +92,7 @@ class BenchInputs:
                 v |= (p.levels(cycle) & m & ~free) | (base & free)
         return v
 
-    def next_change(self, cycle: int) -> Optional[int]:
+    def next_change(self, cycle: int) -> int | None:
         best = self.base.next_change(cycle)
         for p, _ in self.parts:
             t = p.next_change(cycle)
@@ -122,12 +122,12 @@ class Bench:
     ['LED P16', 'servo P17']
     """
 
-    def __init__(self, parts: Iterable[Part] = (), *, name: Optional[str] = None):
+    def __init__(self, parts: Iterable[Part] = (), *, name: str | None = None):
         self.parts: list[Part] = []
         self.name = name
-        self.clock_hz: Optional[int] = None
-        self.end_cycle: Optional[int] = None
-        self.inputs: Optional[BenchInputs] = None
+        self.clock_hz: int | None = None
+        self.end_cycle: int | None = None
+        self.inputs: BenchInputs | None = None
         #: called as ``on_time(cycle)`` after the parts have seen the pins up to ``cycle`` (live views)
         self.on_time = None
         self._attached = False
@@ -158,7 +158,7 @@ class Bench:
         return [p for p in self.parts if p.kind == kind]
 
     # ------------------------------------------------------------------ attaching
-    def attach(self, engine, interval_cycles: Optional[int] = None) -> None:
+    def attach(self, engine, interval_cycles: int | None = None) -> None:
         """Connect every part to ``engine`` before its run.
 
         Args:
@@ -261,7 +261,7 @@ class _WireView:
         self.sources = inputs.sources()
         self.to = 0                 # input levels are merged before this cycle
         self.drive = (0, 0)
-        self.levels: Optional[int] = None
+        self.levels: int | None = None
         self.state = (0, 0)
 
     def _input_changes(self, a: int, b: int) -> list:

@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import bisect
 import math
-from typing import Callable, Iterable, Optional, Union
+from collections.abc import Callable, Iterable
 
 __all__ = ["Constant", "PinStimulus", "Polled", "PinWaveforms", "InputSpecError",
            "parse_input_spec", "make_input_model", "CALLABLE_POLL_CYCLES", "model_mask"]
@@ -60,7 +60,7 @@ class Constant:
     def levels(self, cycle: int) -> int:
         return self.level
 
-    def next_change(self, cycle: int) -> Optional[int]:
+    def next_change(self, cycle: int) -> int | None:
         return None
 
 
@@ -108,7 +108,7 @@ class PinStimulus:
         i = bisect.bisect_right(self.times, cycle)
         return self.values[i - 1] if i else self.initial
 
-    def next_change(self, cycle: int) -> Optional[int]:
+    def next_change(self, cycle: int) -> int | None:
         i = bisect.bisect_right(self.times, cycle)
         return self.times[i] if i < len(self.times) else None
 
@@ -129,7 +129,7 @@ class Polled:
     def levels(self, cycle: int) -> int:
         return int(self.fn(cycle)) & _ALL
 
-    def next_change(self, cycle: int) -> Optional[int]:
+    def next_change(self, cycle: int) -> int | None:
         return cycle + self.poll_cycles
 
 
@@ -160,9 +160,6 @@ def make_input_model(inputs, *, pull_up: bool):
 
 
 # ----------------------------------------------------------------------------- time-based waveforms
-Spec = Union[int, list, tuple, Callable[[float], int]]
-
-
 class PinWaveforms:
     """Levels given per pin in seconds, as an input model on a clock.
 
@@ -193,7 +190,7 @@ class PinWaveforms:
     """
 
     def __init__(self, spec: dict, clock_hz: int, *, base: int = 0, pin_count: int = 32,
-                 poll_cycles: Optional[int] = None):
+                 poll_cycles: int | None = None):
         changes = []
         self.pins = 0
         self._calls: list[tuple[int, Callable]] = []
@@ -229,7 +226,7 @@ class PinWaveforms:
                     v |= bit
         return v
 
-    def next_change(self, cycle: int) -> Optional[int]:
+    def next_change(self, cycle: int) -> int | None:
         nxt = self._stim.next_change(cycle)
         if self._calls:
             poll = cycle + self.poll_cycles

@@ -34,7 +34,6 @@ from __future__ import annotations
 
 from bisect import bisect_left, bisect_right
 from collections import deque
-from typing import Optional
 
 from ..records import FrozenRecord
 
@@ -102,10 +101,10 @@ class Part:
     #: what the engine's own input model says
     releases = False
 
-    def __init__(self, *, name: Optional[str] = None):
+    def __init__(self, *, name: str | None = None):
         self._name = name
         self.warnings: list[PartWarning] = []
-        self.clock_hz: Optional[int] = None
+        self.clock_hz: int | None = None
         self.port = None
 
     @property
@@ -154,7 +153,7 @@ class Part:
         """The levels this part puts on its driven pins at ``cycle`` (other bits are ignored)."""
         return 0
 
-    def next_change(self, cycle: int) -> Optional[int]:
+    def next_change(self, cycle: int) -> int | None:
         """The first cycle after ``cycle`` at which :meth:`levels` changes (given the drives so far), or None."""
         return None
 
@@ -264,7 +263,7 @@ class ReactivePart(Part):
         self._sync(cycle)
         return self._values[bisect_right(self._times, cycle) - 1]
 
-    def next_change(self, cycle: int) -> Optional[int]:
+    def next_change(self, cycle: int) -> int | None:
         end = self._hist.recorded_end()
         self._sync(end if end > cycle else cycle)
         times = self._times

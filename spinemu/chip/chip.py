@@ -32,7 +32,7 @@ cog and lock management, and the run's result.
 from __future__ import annotations
 
 import time
-from typing import Callable, Optional
+from collections.abc import Callable
 
 from ..diagnostics import EmulationError
 from ..bench.inputs import make_input_model
@@ -95,9 +95,9 @@ class RunResult(Record):
 
     _fields = ("trace", "hub", "end_cycle", "reason", "cog_events", "warnings", "stats", "runtime_warnings")
 
-    def __init__(self, trace: PinTrace, hub: bytes, end_cycle: int, reason: str, cog_events: Optional[list] = None,
-                 warnings: Optional[list] = None, stats: Optional[dict] = None,
-                 runtime_warnings: Optional[list] = None):
+    def __init__(self, trace: PinTrace, hub: bytes, end_cycle: int, reason: str, cog_events: list | None = None,
+                 warnings: list | None = None, stats: dict | None = None,
+                 runtime_warnings: list | None = None):
         self.trace, self.hub, self.end_cycle, self.reason = trace, hub, end_cycle, reason
         self.cog_events = [] if cog_events is None else cog_events
         self.warnings = [] if warnings is None else warnings
@@ -148,8 +148,8 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
     pin_count = 32
 
     def __init__(self, image: bytes, *, compat: str = "spinsim", inputs=None,
-                 source_map: Optional[Callable] = None, fast_forward: bool = True,
-                 timing: Optional[Timing] = None, compile_blocks: bool = True, labels=None,
+                 source_map: Callable | None = None, fast_forward: bool = True,
+                 timing: Timing | None = None, compile_blocks: bool = True, labels=None,
                  run_ahead: bool = True, warn=True, debug_info=None, steady_skip: bool = True):
         if compat not in COMPAT_MODES:
             raise ValueError(f"compat must be one of {COMPAT_MODES}, not {compat!r}")
@@ -312,7 +312,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         return EmulationError(f"{message} ({where})", path=path, line=line)
 
     # ------------------------------------------------------------------ cogs
-    def start_spin_cog(self, c: Cog, par: int, t_first: int, by: Optional[Cog]) -> None:
+    def start_spin_cog(self, c: Cog, par: int, t_first: int, by: Cog | None) -> None:
         """Start the Spin interpreter in cog ``c``; its first instruction runs at ``t_first``."""
         keep = (c.dira, c.outa) if self.spinsim else (0, 0)
         c.reset_registers()
@@ -335,7 +335,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         if keep != (0, 0):
             self.note_pins(c, t_first)
 
-    def stop_cog(self, c: Cog, t: int, why: str, by: Optional[Cog] = None, seen: Optional[int] = None,
+    def stop_cog(self, c: Cog, t: int, why: str, by: Cog | None = None, seen: int | None = None,
                  restart: bool = False) -> None:
         """Stop cog ``c`` at cycle ``t`` (its pins float then).
 
@@ -431,7 +431,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
                 return f"{found[0]}:{found[1]}"
         return ""
 
-    def trace_cog(self, cog_id: int, callback: Optional[Callable]) -> None:
+    def trace_cog(self, cog_id: int, callback: Callable | None) -> None:
         """Report every PASM instruction cog ``cog_id`` executes to ``callback``.
 
         ``callback(step)`` gets a :class:`spinemu.chip.pasm_cog.PasmStep`
@@ -509,7 +509,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         return run_spin_method(self, c, tf)
 
     # ------------------------------------------------------------------ running
-    def run(self, max_cycles: Optional[int] = None, progress: Optional[Callable[[int], None]] = None) -> RunResult:
+    def run(self, max_cycles: int | None = None, progress: Callable[[int], None] | None = None) -> RunResult:
         """Run until every cog stopped or ``max_cycles`` cycles have passed.
 
         Args:
@@ -527,7 +527,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         reason = self.advance(max_cycles, progress)
         return self.result(reason, time.perf_counter() - wall)
 
-    def advance(self, until: Optional[int] = None, progress: Optional[Callable[[int], None]] = None) -> str:
+    def advance(self, until: int | None = None, progress: Callable[[int], None] | None = None) -> str:
         """Run on from where the chip is until cycle ``until`` (``None``: until every cog stops).
 
         Unlike :meth:`run`, this can be called again and again (the test
@@ -621,7 +621,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         else:
             self.mem_longs[a >> 2] = value & 0xFFFFFFFF
 
-    def release_pin_wait(self, cog_id: int, t: Optional[int] = None) -> None:
+    def release_pin_wait(self, cog_id: int, t: int | None = None) -> None:
         """End cog ``cog_id``'s WAITPEQ/WAITPNE as if its condition had come true at cycle ``t`` (default ``now``)."""
         c = self.cogs[cog_id]
         if c.state != PIN_WAIT:
@@ -633,7 +633,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         c.t = (self.now if t is None else t) + after
         self._cogs_changed = True
 
-    def pin_trace(self, until: Optional[int] = None):
+    def pin_trace(self, until: int | None = None):
         """The :class:`~spinemu.trace.PinTrace` of the run so far (up to ``until``, default ``now``)."""
         return self._build_trace(self.now if until is None else until)
 

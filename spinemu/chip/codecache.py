@@ -21,7 +21,6 @@ import marshal
 import os
 import sys
 import zlib
-from typing import Optional
 
 __all__ = ["CodeCache", "for_image", "cache_dir", "KEEP"]
 
@@ -30,7 +29,7 @@ KEEP = 256
 _FORMAT = 2         # (1: the code objects alone)
 
 
-def cache_dir() -> Optional[str]:
+def cache_dir() -> str | None:
     """The directory for this spinemu and Python, or None when caching is off."""
     from .. import __version__
     from ..fileio import cache_base
@@ -41,7 +40,7 @@ def cache_dir() -> Optional[str]:
     return os.path.join(base, f"blocks-{__version__}-{sys.implementation.cache_tag}-{sys.hexversion:08x}")
 
 
-def for_image(image: bytes) -> Optional["CodeCache"]:
+def for_image(image: bytes) -> "CodeCache" | None:
     """The cache of compiled blocks for a program image, or None when caching is off."""
     d = cache_dir()
     if d is None:

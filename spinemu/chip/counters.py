@@ -84,7 +84,6 @@ from __future__ import annotations
 
 from bisect import bisect_right
 from collections import namedtuple
-from typing import Optional
 
 from .phase import Phase, combine
 from .pinhistory import PinHistory, enumerate_fn
@@ -171,7 +170,7 @@ class _Counter:
         return self.phs0
 
     # outputs --------------------------------------------------------------------
-    def signal(self) -> Optional[Phase]:
+    def signal(self) -> Phase | None:
         """APIN's output as a phase signal (accumulator output modes), else ``None``."""
         if self.sig is not None:
             return self.sig
@@ -496,7 +495,7 @@ class Counters:
         """Kept for engines that call it before changing pins: counter outputs reach the trace and the
         pin listeners from the counters' history (:mod:`spinemu.chip.countermarks`), so there is nothing to do."""
 
-    def next_edge(self, t: int, mask: int = 0xFFFFFFFF) -> Optional[int]:
+    def next_edge(self, t: int, mask: int = 0xFFFFFFFF) -> int | None:
         """The first counter output change of any running cog after ``t`` on a pin it drives (for WAITPEQ/WAITPNE).
 
         ``mask``: only pins in it count (the pins the waiting cogs watch).
@@ -524,7 +523,7 @@ class Counters:
         return best
 
     # PLL report ------------------------------------------------------------------
-    def pll_outputs(self, end: Optional[int] = None) -> list:
+    def pll_outputs(self, end: int | None = None) -> list:
         """Every stretch of a run in which a counter was in a PLL mode with FRQ set, as :data:`PllOutput`.
 
         ``pins`` lists the pins the PLL drives (none for PLL internal, which

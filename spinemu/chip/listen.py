@@ -41,7 +41,6 @@ and the changes, however long the run.
 """
 from __future__ import annotations
 
-from typing import Optional
 
 __all__ = ["Listeners"]
 
@@ -67,7 +66,7 @@ class Listeners:
         """Pin events recorded before the cycle already handed to listeners (0 unless a timing rule is broken)."""
         return self.pin_fold.late
 
-    def add_pin_listener(self, listener, interval_cycles: Optional[int] = None) -> None:
+    def add_pin_listener(self, listener, interval_cycles: int | None = None) -> None:
         """Call ``listener(changes, upto, present)`` as the run goes (see the module docstring).
 
         Args:

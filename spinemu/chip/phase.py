@@ -19,7 +19,7 @@ them.  Nothing here knows about cogs or pins.
 """
 from __future__ import annotations
 
-from typing import Iterator, Optional
+from collections.abc import Iterator
 
 __all__ = ["floor_sum", "Phase", "complement", "intersect", "shift", "combine"]
 
@@ -165,7 +165,7 @@ class Phase:
     def with_window(self, window: tuple) -> "Phase":
         return Phase(self.base, self.step, self.modulus, window)
 
-    def constant(self) -> Optional[int]:
+    def constant(self) -> int | None:
         """0 or 1 if the signal never changes, else ``None``."""
         if not self.window:
             return 0
@@ -243,7 +243,7 @@ class Phase:
             yield from sorted(hits)
             lap += 1
 
-    def next_change(self, a: int, horizon: int = 1 << 40) -> Optional[int]:
+    def next_change(self, a: int, horizon: int = 1 << 40) -> int | None:
         """The first cycle after ``a`` (up to ``a + horizon``) at which the signal changes."""
         f, m = self.step, self.modulus
         if f == 0:

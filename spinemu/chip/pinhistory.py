@@ -35,7 +35,6 @@ feedback output needs to have happened.
 from __future__ import annotations
 
 from bisect import bisect_right
-from typing import Optional
 
 from .phase import Phase, combine
 
@@ -205,7 +204,7 @@ class PinHistory:
         else:
             out.extend(enumerate_or(lists, s, e))
 
-    def next_change(self, pin: int, a: int, feedback: bool = True, horizon: int = 1 << 40) -> Optional[int]:
+    def next_change(self, pin: int, a: int, feedback: bool = True, horizon: int = 1 << 40) -> int | None:
         """The first cycle after ``a`` at which pin ``pin`` differs from the cycle before, as recorded now."""
         span = 1 << 12
         lo = a

@@ -24,7 +24,6 @@ writes :mod:`spinemu.chip.timing_data`.
 from __future__ import annotations
 
 from functools import lru_cache
-from typing import Optional
 
 __all__ = ["Timing", "load_timing", "hub_align", "segments_rest", "math_param", "MATH_REF", "access_offsets",
            "wide_offsets"]
@@ -226,7 +225,7 @@ _ASSIGN_CODES = {0x00, 0x08, 0x0C, 0x10, 0x14, 0x18, 0x1C} | {b for b in range(0
 _LOOPS = ("strsize", "strcomp_eq", "strcomp_ne", "bytefill", "wordfill", "longfill", "bytemove", "wordmove", "longmove")
 
 
-def load_timing(data: Optional[dict] = None) -> Timing:
+def load_timing(data: dict | None = None) -> Timing:
     """The measured timing (:mod:`spinemu.chip.timing_data`), or ``data`` if given."""
     if data is None:
         return _measured()
