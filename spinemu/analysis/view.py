@@ -92,7 +92,6 @@ def timeline_rows(trace: PinTrace, pins: Iterable[int] | None = None, start: int
             state = changes[i][1:]
             i += 1
         for col in range(width):
-            c0 = start + (end - start) * col // width
             c1 = start + (end - start) * (col + 1) // width
             level = _level(state[0], state[1], pin)
             changed = False
