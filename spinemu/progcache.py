@@ -16,7 +16,8 @@ That is decided as ``make`` would, but by contents rather than times:
   size and time of each of its modules and of its grammar;
 * every file the compilation read (each object's source, each DAT ``file``,
   the library namesakes an OBJ hint compares) must have the same size and
-  CRC-32 (or still be missing);
+  CRC-32 as the bytes the compiler read (or still be missing), so that an
+  edit saved while it compiled is compiled by the next run;
 * every folder whose files decided a lookup (each folder an OBJ or ``file``
   name was looked for in, up to where it was found, and the library folders)
   must still list the same names (or still be missing), so that a file added
@@ -156,7 +157,8 @@ def _save(entry: str, key: tuple, prog) -> None:
         return
     saved = {
         "key": key,
-        "files": [(p, _fingerprint_file(p)) for p in sorted(search.files)],
+        # (the sources and DAT files as the compiler read them; the others as they are now)
+        "files": [(p, fp if fp is not None else _fingerprint_file(p)) for p, fp in sorted(search.files.items())],
         "dirs": [(p, _fingerprint_dir(p)) for p in sorted(search.dirs)],
         "binary": bytes(prog.binary), "lines": prog.line_table.items(columns=True),
         "warnings": list(prog.warnings), "labels": prog.dat_labels(), "symbols": prog.dat_symbols(),

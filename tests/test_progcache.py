@@ -165,3 +165,25 @@ def test_the_compiler_stamp_follows_its_files():
     finally:
         os.utime(target, ns=(st.st_atime_ns, st.st_mtime_ns))
     assert progcache._compiler_stamp() == before
+
+
+def test_a_source_changed_while_it_compiles_is_not_cached_as_its_new_text(tmp_path, cache, monkeypatch):
+    """The cache holds the file as the compiler read it: an edit saved during the compilation is compiled
+    by the next run, not hidden behind the image of the old text."""
+    import spinemu.frontend.objects as objects
+
+    path = _program(tmp_path / "src")
+    child = tmp_path / "src" / "child.spin"
+    real = objects.read_source
+
+    def read_then_edit(p):
+        text = real(p)
+        if os.path.basename(p) == "child.spin":
+            child.write_text(CHILD.format(5))           # saved by an editor just after the read
+        return text
+
+    monkeypatch.setattr(objects, "read_source", read_then_edit)
+    old = compile_cached(path).binary
+    monkeypatch.setattr(objects, "read_source", real)
+    new = compile_cached(path)
+    assert not isinstance(new, CachedProgram) and new.binary != old

@@ -25,6 +25,7 @@ computes values.  Layout rules (Propeller Manual, DAT; observed on OpenSpin
 from __future__ import annotations
 
 import os
+import zlib
 from dataclasses import dataclass
 from typing import Optional
 
@@ -286,10 +287,10 @@ class _Assembler:
                 pos = body.pos
                 search.warnings.append(Diagnostic(found.warning, pos.path, pos.line, pos.col,
                                                   self.unit.spin.source.line(pos.line), "warning"))
-            search.files.add(found.path)
             try:
                 with open(found.path, "rb") as fh:
                     data = fh.read(HUB_BYTES + 1)   # more than the hub holds cannot fit in any image
+                search.files[found.path] = (len(data), zlib.crc32(data))    # (for the program cache)
                 if len(data) > HUB_BYTES:
                     self.report(msg.DAT_FILE_TOO_BIG.format(name=body.filename, size=HUB_BYTES), body)
                     data = b""

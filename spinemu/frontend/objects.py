@@ -104,7 +104,7 @@ class _Loader:
             return self.units[real]
         if source is None:
             source = read_source(path)
-            self.search.files.add(path)
+            self.search.files[path] = source.digest      # (what was compiled, even if the file changes now)
         spin, errors = parse_text(source, self.defines)
         self.errors.extend(errors)
         self.syntax_errors += len(errors)
@@ -128,7 +128,8 @@ class _Loader:
             unit.hints.extend(shadowed_object_hints(decl, child_path, here, libraries, spin.source))
             # (the hint compares the file found with its namesakes in every library folder)
             self.search.dirs.update(libraries)
-            self.search.files.update(os.path.join(d, os.path.basename(child_path)) for d in libraries)
+            for d in libraries:
+                self.search.files.setdefault(os.path.join(d, os.path.basename(child_path)), None)
             child = self.load(child_path)
             if child is not None:
                 unit.children.append((decl, child))

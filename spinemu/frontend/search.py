@@ -170,7 +170,7 @@ class SearchPath:
         #: program): the folders whose files decided a lookup, existing or not, and the files
         #: whose contents went into the program (the loader and the DAT ``file`` reader add these)
         self.dirs: set = set()
-        self.files: set = set()
+        self.files: dict = {}       # path -> (size, CRC-32) of the bytes used, None: of the file as it is
         if self.standard:
             self._extra += standard_library_folders(self.platform, environ)
             platform = sys.platform if self.platform is None else self.platform

@@ -8,6 +8,7 @@ unchanged except that it always ends with a newline, so that positions
 from __future__ import annotations
 
 import os
+import zlib
 from dataclasses import dataclass, field
 from typing import NamedTuple, Optional
 
@@ -84,6 +85,8 @@ class SourceText:
     text: str
     encoding: str = "utf-8"
     _lines: Optional[list] = field(default=None, repr=False)
+    #: ``(size, CRC-32)`` of the file's bytes as read (:func:`read_source`), for the program cache
+    digest: Optional[tuple] = field(default=None, repr=False, compare=False)
 
     def __post_init__(self):
         lines = split_lines(self.text)
@@ -160,4 +163,4 @@ def read_source(path: str) -> SourceText:
     except OSError as exc:
         raise ParseError(msg.CANNOT_READ.format(reason=exc.strerror or exc), path=path) from None
     text, encoding = decode_source(data, path)
-    return SourceText(os.fspath(path), text, encoding)
+    return SourceText(os.fspath(path), text, encoding, digest=(len(data), zlib.crc32(data)))
