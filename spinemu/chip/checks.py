@@ -237,6 +237,11 @@ class RuntimeChecks:
     def wants(self, kind: str) -> bool:
         return self.log.wants(kind)
 
+    def frames_state(self) -> tuple:
+        """What the uninitialized-local check remembers between bytecodes (per frame, the locals written
+        so far), comparable: a period the steady-state skip repeats must leave it as it found it."""
+        return tuple(sorted((k, tuple(sorted(v))) for k, v in self._assigned.items()))
+
     def _where(self, c) -> int:
         """The bytecode a Spin cog is executing; -1 for a cog another engine runs (no bytecode address)."""
         return (c.pc - 1) & 0xFFFF if c.engine == "spin" else -1
@@ -291,7 +296,7 @@ class RuntimeChecks:
         chip = self.chip
         ops = {mem[a] for a in self.sites} | {0x05, 0x06, 0x07}
         for op in ops:
-            chip.wrap_handler(op, self._wrap(op, chip.handlers[op]))
+            chip.wrap_handler(op, self._wrap(op, chip.handlers[op]), lambda inner, op=op: self._wrap(op, inner))
         chip.interpret_only |= set(self.sites)
         chip.interpret_calls = True
 

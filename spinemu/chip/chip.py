@@ -220,6 +220,8 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
             self.warning_log = _default_log(debug_info, source_map) if warn is True else warn
             self.checks = RuntimeChecks(self, self.warning_log, debug_info)
         self.handlers = build_handlers(self, self.timing)
+        #: (bytecode, rewrap) of every handler wrap_handler replaced, in order
+        self._wraps: list = []
         self.access_at = access_offsets()
         self.access_wide = wide_offsets()     # +16 for a two-byte offset (timing.wide_offsets)
         self._handlers = list(self.handlers)      # the real ones, while a preemption is pending
@@ -242,6 +244,7 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         #: (the instrumented loop; used by the timing derivation and debugging)
         self.recorder = None
         self._tracking = None       # the learning interpreter (fastforward.py), built on first use
+        self._tracking_wraps = 0    # ... wrapped as the chip's handlers were then (wrap_handler)
         self.learn_tracked = 0      # bytecodes the latest learning attempt ran
         self._ff_loops = self._ff_skipped = 0
         from .fastforward import LoopMemory
@@ -278,15 +281,28 @@ class Chip(Pins, Listeners, RunAhead, Scheduler):
         if self.checks is not None:
             self.checks.install()
 
-    def wrap_handler(self, op: int, handler) -> None:
+    def wrap_handler(self, op: int, handler, rewrap=None) -> None:
         """Replace the interpreter's handler for bytecode ``op`` (runtime checks, tools).
 
-        No cog runs ahead from then on (the checked copy of the handlers that
-        running ahead needs, ahead.py, would not have the wrapped one).
+        ``rewrap(inner)``, if given, makes the same wrapper around another
+        handler: the copies of the interpreter that learn busy loops and record
+        steady states (fastforward.py, steady.py) are then wrapped alike, so
+        they run the bytecode as the chip does.  Without it the steady-state
+        skip stays off.  No cog runs ahead from then on (the checked copy of the
+        handlers that running ahead needs, ahead.py, would not have the wrapped
+        one).
         """
         self.handlers[op] = handler
         self._handlers[op] = handler
         self._handlers_wrapped = True
+        self._wraps.append((op, rewrap))
+
+    def wrap_copy(self, handlers: list) -> list:
+        """Wrap ``handlers`` (a copy of the interpreter's) as :meth:`wrap_handler` wrapped the chip's own."""
+        for op, rewrap in self._wraps:
+            if rewrap is not None:
+                handlers[op] = rewrap(handlers[op])
+        return handlers
 
 
     @property

@@ -338,7 +338,8 @@ def _qualify(chip, entries, key, period: int, bytecodes: int, sp_head: int):
 
 
 def tracking_handlers(chip, timing):
-    """The interpreter's handlers bound to logging memory views; returns ``(handlers, log)``."""
+    """The interpreter's handlers bound to logging memory views, wrapped as the chip's are (runtime
+    checks: Chip.wrap_handler); returns ``(handlers, log)``."""
     from .spin import build_handlers
     log = []
-    return build_handlers(_TrackingChip(chip, log), timing), log
+    return chip.wrap_copy(build_handlers(_TrackingChip(chip, log), timing)), log

@@ -440,8 +440,9 @@ class Scheduler:
         self._request_preemption()
 
     def _learn(self, c: Cog, until: int) -> None:
-        if self._tracking is None:
+        if self._tracking is None or self._tracking_wraps != len(self._wraps):
             self._tracking = tracking_handlers(self, self.timing)
+            self._tracking_wraps = len(self._wraps)
         handlers, log = self._tracking
         try:
             loop = learn_busy_loop(self, c, handlers, log, until)

@@ -12,7 +12,9 @@ result (pin trace, hub RAM, end cycle):
    busy loop, bench part or debugger in the way: :meth:`SteadySkip.eligible`),
    the chip runs on exactly as always, but through the interpreter's own
    handlers with logging hub views (as the busy-loop learner does,
-   fastforward.py).  Every bytecode is recorded with its cog, address, start
+   fastforward.py), wrapped as the chip's are (the runtime checks'
+   uninitialized-local handlers, whose record of the locals each frame
+   wrote must also come back to where it was).  Every bytecode is recorded with its cog, address, start
    cycle and the hub reads and writes it made, and each time the first cog
    that ran comes back to the bytecode address it started at (the *anchor*),
    the state of every cog is noted.
@@ -48,8 +50,17 @@ result (pin trace, hub RAM, end cycle):
 
 A failed attempt costs its recording (real execution, only slower, some 30
 times): recordings are capped (:data:`BUDGET_BYTECODES`,
-:data:`BUDGET_INTERVAL`, :data:`ALLOWANCE`), and after one that found nothing
-worth skipping the chip must be calm for :data:`CALM` cycles again.
+:data:`BUDGET_INTERVAL`), all of them together may cost :data:`ALLOWANCE`
+bytecodes, one per :data:`RATIO` the chip ran and one per :data:`PAYOFF`
+their skips saved, and after one that found nothing worth skipping the chip
+must be calm for :data:`CALM` cycles again.  A proof that holds but would
+skip too little to pay (an inner loop found calm late in its life: its
+count ends soon) gives the moment its state changes; no longer period can
+pay before it.  The chip then runs on normally to just after that moment
+and records once more, so that the same period, found at the start of the
+next inner loop, pays; if that one is too short again (a loop of a few
+iterations), the recording goes on past the change, where a period that
+holds the whole loop can be found.
 ``Chip(steady_skip=False)`` turns this off (the old/new comparison in the
 tests).
 """
@@ -96,6 +107,9 @@ MAX_SKIP = 1 << 36
 PAYOFF = 20
 
 _STEADY, _BUDGET, _LOOK = "steady state found", "steady: recording budget spent", "steady: look"
+_RETRY = "steady: record again when the state has changed"
+#: cycles after the horizon of a proof that did not pay at which the next recording starts
+RETRY_AFTER = 2_000
 
 _NAMES = [e.handler for e in TABLE]
 #: bytecodes a period may not contain at all (their effects are not in the hub log)
@@ -448,6 +462,9 @@ class _Recorder:
         self.anchor = None
         self.tried: set = set()
         self.by_snap: dict = {}     # cog states -> the visits (indices into hits) in them
+        #: the first change a proof that did not pay found: a longer period can only do better if it
+        #: holds that change (the end of an inner loop), so no proof is tried before it
+        self.horizon = 0
 
     def _hit(self, chip, c):
         rows, hits = self.rows, self.hits
@@ -457,7 +474,7 @@ class _Recorder:
             self.sigs.append(None)
         hits.append((len(rows), t, snap, len(chip.pin_events), _times(chip)))
         j = len(hits) - 1
-        if snap is None or j < 2:
+        if snap is None or j < 2 or t < self.horizon:     # (before the horizon no proof can pay: below)
             return
         same = self.by_snap.setdefault(snap, set())    # the earlier visits in this state
         same.add(j)
@@ -505,8 +522,9 @@ def _snapshot(chip):
             return None
         else:
             out.append((cog_state(k), k.outb, k.dirb))
-    wlog = chip.warning_log
-    return tuple(out), tuple(chip.locks), wlog.total if wlog is not None else 0
+    wlog, checks = chip.warning_log, chip.checks
+    return (tuple(out), tuple(chip.locks), wlog.total if wlog is not None else 0,
+            checks.frames_state() if checks is not None else ())
 
 
 def _times(chip) -> tuple:
@@ -547,6 +565,7 @@ class SteadySkip:
         self.looks = 0
         self._seen = [(0, 0)] * 8     # per cog: bytecodes and cycle at the last look
         self.handlers = None
+        self._wraps = 0             # ... wrapped as the chip's handlers were then (Chip.wrap_handler)
         self.log: list = []
         self.periods = 0            # periods skipped
         self.skips = 0
@@ -555,13 +574,18 @@ class SteadySkip:
         self.woken = False          # did it end where a cog sleeping through its periods wakes?
         self.wake_at = INFINITE     # ... and when that cog's turn comes
         self.skipped = 0            # ... and all skips
+        self.retry_at = 0           # when to record again after a proof that did not pay (_RETRY)
+        self.retrying = False       # ... and whether this recording is that second one
+        self.retries = 0
         self._ff_seen = 0           # the busy-loop skipper's count at the last look
 
-    def eligible(self) -> bool:
+    def eligible(self, rate: bool = True) -> bool:
         chip = self.chip
-        if (chip.probe is not None or chip.recorder is not None or chip._handlers_wrapped or chip._parked
+        if (chip.probe is not None or chip.recorder is not None or chip._parked
                 or chip._pin_waiters or chip._pend or chip.counters_on or chip.pin_listeners
                 or chip._preempt or chip._halt_reason is not None):
+            return False
+        if any(rewrap is None for _, rewrap in chip._wraps):  # (a tool's wrapper the recording cannot copy)
             return False
         checks = chip.checks
         for f in chip.pin_hooks:
@@ -587,7 +611,7 @@ class SteadySkip:
                 return False
             running = True
             b0, t0 = seen[c.id]
-            if c.bytecodes - b0 > (c.t - t0) // _SLEEPY:
+            if rate and c.bytecodes - b0 > (c.t - t0) // _SLEEPY:
                 return False
         return running
 
@@ -607,16 +631,19 @@ class SteadySkip:
             every = LOOK_EVERY + (self.looks * 618_034) % 1_000_000
             if self.woken and t < self.wake_at:     # ... or just after a sleeper's turn that ended a skip
                 every = min(every, self.wake_at - t + 100_000)
-            chip.progress_every = every
             if chip._pend or chip._preempt:     # a write-back on its way: this moment is no good, the
-                return                          # state may still be (the next look will tell)
+                chip.progress_every = min(every, 4_000)     # state may still be (a look soon will tell)
+                return
+            chip.progress_every = every
             if not self.eligible():
                 self.calm = None
                 return
             if self.calm is None:
                 self.calm = t
-            if t - self.calm >= CALM and t >= self.next_look \
-                    and self.recorded <= ALLOWANCE + sum(c.bytecodes for c in chip.cogs) // RATIO:
+            # (recordings may cost a small part of what the chip ran, and as much more as the skips
+            # they found have paid back)
+            if t - self.calm >= CALM and t >= self.next_look and self.recorded <= \
+                    ALLOWANCE + sum(c.bytecodes for c in chip.cogs) // RATIO + self.skipped // PAYOFF:
                 raise Halted(_LOOK)
 
         while True:
@@ -637,9 +664,42 @@ class SteadySkip:
         self.attempts += 1
         for c in list(chip._ahead):         # a cog that ran ahead (ahead.py) goes back to the present
             chip._rollback(c, chip.now, 8)
-        if self.handlers is None:
+        if self.handlers is None or self._wraps != len(chip._wraps):
             from .spin import build_handlers
-            self.handlers = build_handlers(_RecordingChip(chip, self.log), chip.timing)
+            # (wrapped as the chip's handlers are: the runtime checks see the recorded bytecodes too)
+            self.handlers = chip.wrap_copy(build_handlers(_RecordingChip(chip, self.log), chip.timing))
+            self._wraps = len(chip._wraps)
+        self.retrying = False
+        while True:
+            rec, reason = self._recording(limit)
+            if reason != _RETRY:
+                break
+            # a proof did not pay: the state changes at its horizon (an inner loop ends).  Run on to
+            # just after it, as the scheduler does, and record again: found early, the period pays
+            self.retries += 1
+            self.retrying = True
+            reason = chip._schedule(min(self.retry_at + RETRY_AFTER, limit), None)
+            if chip.now >= limit or reason != "cycle limit":
+                return reason
+            if not self.eligible(rate=False):
+                reason = _BUDGET
+                break
+        if reason == _STEADY and self.saved >= PAYOFF * len(rec.rows):
+            if self.woken:              # the sleeper's turn comes next, then the same state goes on
+                self.next_look = self.wake_at
+            else:                       # it ended where an answer changes: the state changes there
+                self.next_look = chip.now
+                self.calm = None
+            return None
+        if reason in (_STEADY, _BUDGET):        # nothing found, or too little to pay for the recording
+            self.next_look = chip.now + AFTER_FAILURE
+            self.calm = None
+            return None
+        return reason
+
+    def _recording(self, limit: int):
+        """One recording with the recording handlers in place: ``(recorder, reason)``."""
+        chip = self.chip
         log = self.log
         log.clear()
         rec = _Recorder(self, log)
@@ -657,18 +717,7 @@ class SteadySkip:
             chip._cogs_changed = True
             log.clear()
         self.recorded += len(rec.rows)
-        if reason == _STEADY and self.saved >= PAYOFF * len(rec.rows):
-            if self.woken:              # the sleeper's turn comes next, then the same state goes on
-                self.next_look = self.wake_at
-            else:                       # it ended where an answer changes: the state changes there
-                self.next_look = chip.now
-                self.calm = None
-            return None
-        if reason in (_STEADY, _BUDGET):        # nothing found, or too little to pay for the recording
-            self.next_look = chip.now + AFTER_FAILURE
-            self.calm = None
-            return None
-        return reason
+        return rec, reason
 
     def _record(self, rec: "_Recorder", limit: int):
         """Run the chip one bytecode at a time in the scheduler's exact order, recording each.
@@ -782,7 +831,15 @@ class SteadySkip:
             wake = min(wake, (self.wake_at - t_now) // P - 2)
         skip = min(K - 2, room, wake, MAX_SKIP // P)
         if skip < MIN_SKIP or skip * (b1 - a1) < PAYOFF * len(rows) and skip < room:
-            return False                        # (too little: a longer period may do better)
+            # too little.  The state changes at the horizon (an inner loop ends).  Found early, the
+            # same period would pay: record again just after it; if this is that new recording, a
+            # longer period holding the change may do (a short inner loop), so record on past it
+            horizon = t_now + (max(skip, 0) + 2) * P
+            if not self.retrying:
+                self.retry_at = horizon
+                raise Halted(_RETRY)
+            rec.horizon = max(rec.horizon, horizon)
+            return False
         self.woken = skip == wake               # (the same state goes on after the sleeper's turn)
         self._apply(chip, skip, P, writes, rows[a1:b1], ev[pb:pc], moving)
         return True

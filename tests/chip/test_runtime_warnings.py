@@ -177,3 +177,32 @@ def test_werror_stops_the_run_with_exit_status_1():
     code, out, err = cli("run", EXAMPLES / "pin_conflict.spin", "-Werror")
     assert code == 1 and ": error: P5: cog 1 drives it low" in err and "warnings are errors" in err
     assert "Traceback" not in err
+
+
+BUSY_CALLS_UNINITIALIZED = """CON
+  _clkmode = xtal1 + pll16x
+  _xinfreq = 5_000_000
+VAR
+  long flag, stack[32]
+PUB main
+  cognew(setter, @stack)
+  repeat until flag
+    peek
+PRI peek | x
+  return x
+PRI setter
+  waitcnt(cnt + 4_000_000)
+  flag := 1
+"""
+
+
+def test_a_busy_loop_that_warns_every_time_is_not_skipped_past_its_warnings():
+    # each call of peek is a new frame whose x is read unassigned: a warning per call.  The busy-loop
+    # learner runs the bytecodes with the checks' wrapped handlers too, sees the warnings, and does
+    # not skip the loop, so the count is the same with and without fast-forward
+    prog = compile_source(BUSY_CALLS_UNINITIALIZED, "busy.spin")
+    counts = []
+    for ff in (True, False):
+        r = Chip(prog.binary, debug_info=prog.debug_info(), fast_forward=ff).run(max_cycles=20_000_000)
+        counts.append([(w.kind, w.line, w.count) for w in r.runtime_warnings])
+    assert counts[0] == counts[1] and counts[0][0][2] > 1000

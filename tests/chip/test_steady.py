@@ -187,3 +187,38 @@ def test_a_repeat_counter_stays_inside_its_bounds_for_the_periods_the_bound_says
         for p in range(k):
             assert (lo <= _signed((v + p * d) & M) <= hi) == inside
         assert (lo <= _signed((v + k * d) & M) <= hi) != inside     # (steps of 1 or 4 leave exactly)
+
+
+# a local read before it is assigned: the runtime checks wrap the handlers at its sites
+CHECKED_BLINK = """CON
+  _clkmode = xtal1 + pll16x
+  _xinfreq = 5_000_000
+PUB main | t, n
+  dira[0]~~
+  t := cnt
+  repeat
+    repeat 500
+      waitcnt(t += clkfreq / 1000)
+      !outa[0]
+    n++
+"""
+
+
+def test_a_program_whose_locals_are_checked_skips_and_warns_as_without_the_skip():
+    prog = compile_source(CHECKED_BLINK, "checked.spin")
+    want, _ = outcome(prog.binary, False, 400_000_000, debug_info=prog.debug_info())
+    got, chip = outcome(prog.binary, True, 400_000_000, debug_info=prog.debug_info())
+    assert got == want
+    assert chip._handlers_wrapped                       # (the uninitialized-local check is on)
+    assert chip._steady.periods > 0
+    assert [w[0] for w in got["warnings"]] == ["uninitialized"]
+
+
+def test_a_recording_stops_once_no_skip_could_pay_for_it():
+    # each 500-iteration loop is found calm late in its life: a proof shows the state changes soon
+    # (its REPEAT count ends), so recording longer periods cannot pay and stops there
+    prog = compile_source(CHECKED_BLINK, "checked.spin")
+    chip = Chip(prog.binary, debug_info=prog.debug_info())
+    chip.run(max_cycles=400_000_000)
+    steady = chip._steady
+    assert steady.attempts >= 4 and steady.recorded < 150 * steady.attempts
