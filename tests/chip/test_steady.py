@@ -214,11 +214,14 @@ def test_a_program_whose_locals_are_checked_skips_and_warns_as_without_the_skip(
     assert [w[0] for w in got["warnings"]] == ["uninitialized"]
 
 
-def test_a_recording_stops_once_no_skip_could_pay_for_it():
-    # each 500-iteration loop is found calm late in its life: a proof shows the state changes soon
-    # (its REPEAT count ends), so recording longer periods cannot pay and stops there
+def test_a_proof_too_short_to_pay_records_again_at_the_next_inner_loop():
+    # each 500-iteration loop is found calm late in its life: the proof shows its state changes soon
+    # (its REPEAT count ends), too soon to pay.  Rather than recording ever longer periods for
+    # nothing, the chip runs on to the next inner loop and records there, where the period pays
     prog = compile_source(CHECKED_BLINK, "checked.spin")
     chip = Chip(prog.binary, debug_info=prog.debug_info())
     chip.run(max_cycles=400_000_000)
     steady = chip._steady
-    assert steady.attempts >= 4 and steady.recorded < 150 * steady.attempts
+    assert steady.retries >= 2 and steady.skips >= steady.attempts - 1
+    assert steady.recorded < 150 * steady.attempts                 # (short recordings only)
+    assert steady.periods * 160_000 > 100_000_000                   # (2 ms periods: a quarter of the run)
