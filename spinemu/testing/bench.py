@@ -160,7 +160,7 @@ class SpinBench:
         self._stuck: Optional[str] = None
         self._returned_at: Optional[int] = None
         self._idle_pc = self._find_idle()
-        self.chip.wrap_handler(_WAITPNE, self._idle_hook(self.chip.handlers[_WAITPNE]))
+        self.chip.wrap_handler(_WAITPNE, self._idle_hook(self.chip.handlers[_WAITPNE]), self._idle_hook)
         self._console = None
         if console is not None and console is not False:
             from ..bench import SerialConsole
