@@ -330,7 +330,7 @@ class BlockCompiler(DataOps):
         else:
             # a block generated before (in this run or an earlier one) from the same inputs: the
             # bytes it read, the block starts it could meet, the compiler's settings
-            known = cache.blocks_at((pc, private) + self._settings())
+            known = cache.blocks_at(_generator_key(), (pc, private) + self._settings())
             for inputs, made in known:
                 if self._inputs(pc, inputs[0]) == inputs:
                     break
@@ -349,12 +349,12 @@ class BlockCompiler(DataOps):
         return self._install(pc, end, private, src, loops, foot, locs, ro, privatable)
 
     def _settings(self) -> tuple:
-        """What besides the bytes decides the code generated: calls interpreted (runtime checks), the
-        WAITCNT check, the timing table, and the generator's own code."""
+        """What besides the bytes and the generator's own code decides the code generated: calls
+        interpreted (runtime checks), the WAITCNT check, the timing table."""
         if self._timing_key is None:
             import zlib
             self._timing_key = zlib.crc32(repr(sorted(self.T.data.items())).encode())
-        return (bool(self.interpret_calls), self.checks is not None, self._timing_key, _generator_key())
+        return (bool(self.interpret_calls), self.checks is not None, self._timing_key)
 
     def _inputs(self, pc: int, last: int) -> tuple:
         """The inputs of a block at ``pc`` whose generation read the bytes up to ``last``."""

@@ -26,7 +26,7 @@ __all__ = ["CodeCache", "for_image", "cache_dir", "KEEP"]
 
 #: files (programs) kept per cache directory
 KEEP = 256
-_FORMAT = 2         # (1: the code objects alone)
+_FORMAT = 3         # (1: the code objects alone; 2: generated blocks not by generator)
 
 
 def cache_dir() -> str | None:
@@ -56,10 +56,13 @@ class CodeCache:
     def __init__(self, path: str):
         self.path = path
         self.codes: dict = {}
-        #: (address, variant and the compiler's settings) -> [(inputs, generated block)]: see blocks.py
+        #: generator -> {(address, variant and the compiler's settings) -> [(inputs, generated block)]}:
+        #: see blocks.py; blocks of another generator (spinemu's code changed) are dropped on saving
         self.blocks: dict = {}
         self.hits = self.misses = 0
         self._dirty = False
+        self._used: set = set()         # code keys this run used
+        self._generators: set = set()   # generators this run asked for blocks of
         try:
             with open(path, "rb") as f:
                 saved = marshal.loads(f.read())
@@ -69,11 +72,18 @@ class CodeCache:
         except Exception:           # missing, damaged, from another Python: start empty
             self.codes, self.blocks = {}, {}
 
-    def blocks_at(self, key) -> list:
-        """The blocks generated at ``key`` (a list to look through, and to add a new one to)."""
-        found = self.blocks.get(key)
+    def blocks_at(self, generator, key) -> list:
+        """The blocks ``generator`` made at ``key`` (a list to look through, and to add a new one to)."""
+        if generator not in self._generators:
+            self._generators.add(generator)
+            if any(g != generator for g in self.blocks):
+                self._dirty = True          # (blocks of another generator: drop them when saving)
+        made = self.blocks.get(generator)
+        if made is None:
+            made = self.blocks[generator] = {}
+        found = made.get(key)
         if found is None:
-            found = self.blocks[key] = []
+            found = made[key] = []
         return found
 
     def added_block(self) -> None:
@@ -83,6 +93,7 @@ class CodeCache:
     def compile(self, src: str, name: str):
         """``compile(src, name, "exec")``, from the cache when it has it."""
         key = (src, name)
+        self._used.add(key)
         code = self.codes.get(key)
         if code is not None:
             self.hits += 1
@@ -99,6 +110,10 @@ class CodeCache:
             return
         from ..fileio import create_beside
 
+        if self._generators:        # the blocks and code objects only other generators made go
+            self.blocks = {g: v for g, v in self.blocks.items() if g in self._generators}
+            sources = {made[0] for v in self.blocks.values() for lst in v.values() for _, made in lst}
+            self.codes = {k: c for k, c in self.codes.items() if k in self._used or k[0] in sources}
         d = os.path.dirname(self.path)
         try:
             os.makedirs(d, exist_ok=True)

@@ -67,6 +67,10 @@ def _checked_installs(monkeypatch):
     return installed
 
 
+def _count(cache) -> int:
+    return sum(len(lst) for made in cache.blocks.values() for lst in made.values())
+
+
 def _programs():
     from chip_helpers import PROGRAMS
     names = sorted(n for n in os.listdir(PROGRAMS) if n.endswith(".binary"))
@@ -86,10 +90,10 @@ def test_blocks_taken_from_the_cache_are_the_blocks_the_generator_makes(tmp_path
         assert run(image, first) == want
         first.save()
         again = CodeCache(cache_file)
-        kept = sum(len(v) for v in again.blocks.values())
+        kept = _count(again)
         before = len(installed)
         assert run(image, again) == want
-        assert sum(len(v) for v in again.blocks.values()) == kept      # every block came from the cache
+        assert _count(again) == kept                                    # every block came from the cache
         reused += len(installed) - before
     assert reused > 400
 
@@ -102,7 +106,7 @@ def test_a_cached_block_is_not_taken_when_a_byte_it_read_differs(tmp_path):
     chip = Chip(image)
     chip.code_cache = cache
     chip.run(max_cycles=20_000_000)
-    (key, entries), *_ = [(k, v) for k, v in cache.blocks.items() if v]
+    (key, entries), *_ = [(k, v) for made in cache.blocks.values() for k, v in made.items() if v]
     inputs, made = entries[0]
     compiler = BlockCompiler.__new__(BlockCompiler)
     compiler.mem, compiler.boundaries = bytearray(chip.mem), set()
@@ -131,3 +135,27 @@ def test_a_new_block_start_inside_a_cached_block_is_generated_afresh(tmp_path):
     again = compiler.compile(start)
     assert compiler.compiled[start][0] == middle
     assert again.source == compiler._generate(start, False)[0]
+
+
+def test_blocks_of_another_generator_are_dropped_when_the_cache_is_saved(tmp_path):
+    """After spinemu's block generator changed, its old blocks (and their code objects) can never be
+    taken again: the next save drops them instead of loading them on every run."""
+    image = read_bytes(DEMO)
+    path = str(tmp_path / "demo.marshal")
+    first = CodeCache(path)
+    run(image, first)
+    first.save()
+    old = CodeCache(path)
+    (gen,) = old.blocks
+    stale = {gen + 1: {key: lists for key, lists in old.blocks[gen].items()}}
+    old.blocks.update(stale)
+    old.codes[("x = 1\n", "<stale>")] = compile("x = 1\n", "<stale>", "exec")
+    old._dirty = True
+    old.save()
+    again = CodeCache(path)
+    assert set(again.blocks) == {gen, gen + 1}
+    run(image, again)                       # this generator only: the other one's go
+    again.save()
+    final = CodeCache(path)
+    assert set(final.blocks) == {gen} and ("x = 1\n", "<stale>") not in final.codes
+    assert final.codes and all(k[0] in {m[0] for v in final.blocks[gen].values() for _, m in v} for k in final.codes)
