@@ -8,8 +8,10 @@ result (pin trace, hub RAM, end cycle):
 
 1. **Recording.**  When the chip has been calm for a while (the looks of
    the scheduler's progress hook over :data:`CALM` cycles found every running cog a Spin
-   cog that mostly waits, and no PASM cog, counter output, pin wait, parked
-   busy loop, bench part or debugger in the way: :meth:`SteadySkip.eligible`),
+   cog that mostly waits or a PASM cog parked in an idle loop (pasm_idle.py:
+   it sleeps through the periods, and waking it ends a recording), and no
+   other PASM cog, counter output, pin wait, parked busy loop, bench part or
+   debugger in the way: :meth:`SteadySkip.eligible`),
    the chip runs on exactly as always, but through the interpreter's own
    handlers with logging hub views (as the busy-loop learner does,
    fastforward.py), wrapped as the chip's are (the runtime checks'
@@ -68,7 +70,7 @@ from __future__ import annotations
 
 from ..bytecode import TABLE
 from . import mathops
-from .cog import RUNNING, STOPPED
+from .cog import PARKED, RUNNING, STOPPED
 from .control import Halted
 from .fastforward import LoggedView, _TrackingChip, cog_state
 from .pasm_affine import first_change as _first_change
@@ -510,6 +512,12 @@ class _Recorder:
         return True
 
 
+def _idle_pasm(k) -> bool:
+    """Is cog ``k`` a PASM cog parked in an idle loop (pasm_idle.py)?  It sleeps until its horizon (its
+    scheduler key) or until what it reads changes, which ends a recording (it wakes)."""
+    return k.state == PARKED and k.engine.__class__ is not str and k.busy is not None
+
+
 def _snapshot(chip):
     """Every cog's state (its time apart: :func:`_times`), or None where no period may start."""
     if chip._pend or chip._ahead:
@@ -518,6 +526,8 @@ def _snapshot(chip):
     for k in chip.cogs:
         if k.state == STOPPED:
             out.append((STOPPED, k.dira, k.outa))
+        elif _idle_pasm(k):
+            out.append((PARKED, id(k.busy), k.key, k.dira, k.outa))
         elif k.state != RUNNING or k.engine.__class__ is not str:
             return None
         else:
@@ -581,9 +591,11 @@ class SteadySkip:
 
     def eligible(self, rate: bool = True) -> bool:
         chip = self.chip
-        if (chip.probe is not None or chip.recorder is not None or chip._parked
-                or chip._pin_waiters or chip._pend or chip.counters_on or chip.pin_listeners
-                or chip._preempt or chip._halt_reason is not None):
+        if (chip.probe is not None or chip.recorder is not None or chip._pend or chip.counters_on
+                or chip.pin_listeners or chip._preempt or chip._halt_reason is not None):
+            return False
+        # (parked busy loops and pin waits only of PASM cogs in idle loops: they sleep through it)
+        if any(not _idle_pasm(k) for k in chip._parked) or any(not _idle_pasm(k) for k in chip._pin_waiters):
             return False
         if any(rewrap is None for _, rewrap in chip._wraps):  # (a tool's wrapper the recording cannot copy)
             return False
@@ -605,7 +617,7 @@ class SteadySkip:
         self._seen = [(c.bytecodes, c.t) for c in chip.cogs]
         running = False
         for c in chip.cogs:
-            if c.state == STOPPED:
+            if c.state == STOPPED or _idle_pasm(c):
                 continue
             if c.state != RUNNING or c.engine.__class__ is not str:
                 return False
@@ -737,15 +749,20 @@ class SteadySkip:
         anchor = anchor_pc = None
         stop = min(BUDGET_BYTECODES, BUDGET_INTERVAL + 1)     # (before the first visit of the anchor)
         running: list = []
+        sleeper = INFINITE
         chip._cogs_changed = True
         chip.run_limit = limit
         while True:
             if chip._cogs_changed:
                 chip._cogs_changed = False
                 running = [k for k in cogs if k.state == RUNNING]
-                if chip._pin_waiters or chip._parked or any(k.engine.__class__ is not str for k in running) \
-                        or any(k.running and k.state != RUNNING for k in cogs):
+                if any(k.engine.__class__ is not str for k in running) \
+                        or any(k.running and k.state != RUNNING and not _idle_pasm(k) for k in cogs) \
+                        or any(not _idle_pasm(k) for k in chip._parked) \
+                        or any(not _idle_pasm(k) for k in chip._pin_waiters):
                     return None
+                # a PASM cog in an idle loop: its horizon is its next event (the scheduler's to run)
+                sleeper = min((chip._key(k) for k in cogs if _idle_pasm(k)), default=INFINITE)
             c = None
             ck = 0
             for k in running:
@@ -759,7 +776,7 @@ class SteadySkip:
             if pa < limit and (c is None or pa < ck or pa == ck and chip._pend_id < c.id):
                 chip._apply_pending()
                 continue
-            if c is None or ck >= limit:
+            if c is None or ck >= limit or ck >= sleeper:
                 return None
             pc = c.pc
             t = c.t
@@ -826,7 +843,8 @@ class SteadySkip:
         room = (chip.run_limit - t_now) // P - 2 if chip.run_limit < INFINITE else INFINITE
         wake = INFINITE
         self.wake_at = INFINITE
-        for i in asleep:                        # the skip ends two periods before a sleeper wakes
+        sleepers = list(asleep) + [k.id for k in chip.cogs if _idle_pasm(k)]
+        for i in sleepers:                      # the skip ends two periods before a sleeper wakes
             self.wake_at = min(self.wake_at, chip._key(chip.cogs[i]))
             wake = min(wake, (self.wake_at - t_now) // P - 2)
         skip = min(K - 2, room, wake, MAX_SKIP // P)
@@ -835,7 +853,7 @@ class SteadySkip:
             # same period would pay: record again just after it; if this is that new recording, a
             # longer period holding the change may do (a short inner loop), so record on past it
             horizon = t_now + (max(skip, 0) + 2) * P
-            if not self.retrying:
+            if not self.retrying and not chip._parked:  # (running on to a moment unparks idle PASM cogs)
                 self.retry_at = horizon
                 raise Halted(_RETRY)
             rec.horizon = max(rec.horizon, horizon)

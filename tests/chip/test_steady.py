@@ -225,3 +225,47 @@ def test_a_proof_too_short_to_pay_records_again_at_the_next_inner_loop():
     assert steady.retries >= 2 and steady.skips >= steady.attempts - 1
     assert steady.recorded < 150 * steady.attempts                 # (short recordings only)
     assert steady.periods * 160_000 > 100_000_000                   # (2 ms periods: a quarter of the run)
+
+
+# a PASM cog polling a hub mailbox (an idle loop, parked by pasm_idle.py) while Spin cogs blink and
+# drive a PWM; the main cog posts to the mailbox once, after two seconds, and the PASM cog answers on P2
+IDLE_PASM = """CON
+  _clkmode = xtal1 + pll16x
+  _xinfreq = 5_000_000
+VAR
+  long mailbox, stack[32]
+PUB main | t, n
+  cognew(@poll, @mailbox)
+  cognew(pwm, @stack)
+  dira[0]~~
+  t := cnt
+  repeat
+    !outa[0]
+    waitcnt(t += clkfreq / 2)
+    if ++n == 4
+      mailbox := 1
+PRI pwm | t, i
+  dira[1]~~
+  t := cnt
+  repeat
+    repeat i from 0 to 9
+      outa[1] := i < 3
+      waitcnt(t += clkfreq / 10_000)
+DAT
+        org     0
+poll    rdlong  x, par wz
+  if_z  jmp     #poll
+        or      dira, pin
+        or      outa, pin
+wait    jmp     #wait
+pin     long    |< 2
+x       res     1
+"""
+
+
+def test_a_pasm_cog_idle_in_its_loop_sleeps_through_the_skipped_periods_and_wakes_on_time():
+    image = compile_source(IDLE_PASM, "idle_pasm.spin").binary
+    chip = assert_same(image, 400_000_000)
+    assert chip.pasm is not None and chip._steady.skips >= 2
+    assert chip._steady.periods * 80_000 > 100_000_000          # (a quarter of the run and more)
+    assert chip.result().trace.state_at(400_000_000)[0] & 0b100  # (the PASM cog answered: P2 driven)
