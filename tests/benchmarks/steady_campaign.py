@@ -11,7 +11,10 @@ bytecodes per cog, cog events, runtime warnings or fault differ
 (``schedule_compare.run_outcome``), then totals (programs, how
 many skipped, periods skipped).  ``--multicog`` takes the multi-cog
 programs of the scheduling comparison (tests/chip/multicog_programs.py:
-locks, races, cogs starting and stopping each other) instead.  Exit status 1
+locks, races, cogs starting and stopping each other) instead, ``--pasm``
+programs with a PASM cog idle in a loop (steady_programs.pasm_program: a
+mailbox, a pin or a CNT deadline it polls, which the skip must sleep through
+and wake on time).  Exit status 1
 if any differed.  ``-j N`` runs N processes.  The default test run compares a
 seeded sample (tests/chip/test_steady.py).
 """
@@ -33,10 +36,13 @@ from schedule_compare import run_outcome  # noqa: E402
 
 
 def one(job):
-    seed, cycles, multicog = job
+    seed, cycles, multicog, pasm = job
     if multicog:
         from schedule_compare import generated_image
         image = generated_image(seed)
+    elif pasm:
+        from steady_programs import pasm_program
+        image = compile_source(pasm_program(seed), f"steady_pasm{seed}.spin").binary
     else:
         from steady_programs import program
         image = compile_source(program(seed), f"steady{seed}.spin").binary
@@ -52,10 +58,11 @@ def main(argv=None) -> int:
     ap.add_argument("--seeds", default="0:400", help="START:END (default 0:400)")
     ap.add_argument("--cycles", type=int, default=400_000_000)
     ap.add_argument("--multicog", action="store_true", help="the scheduling comparison's multi-cog programs")
+    ap.add_argument("--pasm", action="store_true", help="programs with a PASM cog idle in a loop")
     ap.add_argument("-j", type=int, default=1, help="processes")
     a = ap.parse_args(argv)
     start, end = (int(x) for x in a.seeds.split(":"))
-    jobs = [(s, a.cycles, a.multicog) for s in range(start, end)]
+    jobs = [(s, a.cycles, a.multicog, a.pasm) for s in range(start, end)]
     t0 = time.perf_counter()
     differ = skipped = periods = 0
     pool = multiprocessing.Pool(a.j) if a.j > 1 else None

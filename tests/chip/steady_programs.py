@@ -86,3 +86,43 @@ def program(seed: int) -> str:
         out.append(f"    waitcnt(t += {periods[w]})\n\n")
     out.append("DAT\n  table byte 3, 6, 12, 9, 1, 2, 4, 8\n")
     return "".join(out)
+
+
+# ----------------------------------------------------------------------------- with an idle PASM cog
+_IDLE_LOOPS = {
+    # a hub mailbox polled until the main cog posts to it; then P2 high
+    "mailbox": ["poll    rdlong  xx, par wz", "  if_z  jmp     #poll", "        or      dira, pin",
+                "        or      outa, pin", "done    jmp     #done"],
+    # a pin polled until it goes high (a Spin cog's pin wakes it, pin 5 nobody's does not)
+    "pin": ["poll    test    watch, ina wz", "  if_z  jmp     #poll", "        or      dira, pin",
+            "        or      outa, pin", "done    jmp     #done"],
+    # a CNT deadline: the loop's horizon, then P2 toggles and it waits again
+    "deadline": ["        mov     tt, cnt", "        add     tt, delay", "poll    mov     uu, cnt",
+                 "        sub     uu, tt", "        cmps    uu, #0 wc", "  if_c  jmp     #poll",
+                 "        xor     outa, pin", "        or      dira, pin", "        add     tt, delay",
+                 "        jmp     #poll"],
+}
+
+
+def pasm_program(seed: int) -> str:
+    """A main cog blinking and posting to a mailbox, a PWM cog, and a PASM cog in an idle loop
+    (pasm_idle.py parks it): a mailbox, a pin or a CNT deadline it polls."""
+    rng = random.Random(seed)
+    kind = rng.choice(sorted(_IDLE_LOOPS))
+    blink = rng.choice([2, 4, 10, 50])
+    pwm_hz = rng.choice([100, 250, 1000, 5000])
+    steps = rng.choice([4, 10, 16])
+    post = rng.choice([-1, 3, 7])
+    watch = rng.choice([0, 1, 5])
+    delay = rng.choice([8000, 800_000, 40_000_000])
+    return "\n".join([
+        "CON", "  _clkmode = xtal1 + pll16x", "  _xinfreq = 5_000_000",
+        "VAR", "  long mailbox, stack[32]",
+        "PUB main | t, n", "  cognew(@entry, @mailbox)", "  cognew(pwm, @stack)", "  dira[0]~~", "  t := cnt",
+        "  repeat", "    !outa[0]", f"    waitcnt(t += clkfreq / {blink})", f"    if ++n == {post}",
+        "      mailbox := n",
+        "PRI pwm | t, i", "  dira[1]~~", "  t := cnt", "  repeat", f"    repeat i from 0 to {steps - 1}",
+        f"      outa[1] := i < {steps // 3}", f"      waitcnt(t += clkfreq / {pwm_hz * steps})",
+        "DAT", "        org     0", "entry", *_IDLE_LOOPS[kind],
+        "pin     long    |< 2", f"watch   long    |< {watch}", f"delay   long    {delay}",
+        "xx      res     1", "tt      res     1", "uu      res     1", ""])

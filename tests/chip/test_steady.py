@@ -19,7 +19,7 @@ from spinemu.compiler.program import compile_source
 
 from chip_helpers import ARTICLE, read_bytes
 from schedule_compare import run_outcome
-from steady_programs import program
+from steady_programs import pasm_program, program
 
 M = 0xFFFFFFFF
 
@@ -269,3 +269,11 @@ def test_a_pasm_cog_idle_in_its_loop_sleeps_through_the_skipped_periods_and_wake
     assert chip.pasm is not None and chip._steady.skips >= 2
     assert chip._steady.periods * 80_000 > 100_000_000          # (a quarter of the run and more)
     assert chip.result().trace.state_at(400_000_000)[0] & 0b100  # (the PASM cog answered: P2 driven)
+
+
+@pytest.mark.parametrize("seed", [0, 5, 9, 12])
+def test_generated_programs_with_an_idle_pasm_cog_run_the_same(seed):
+    # (steady_campaign.py --pasm runs any range: seeds 0-199 all the same, 44 with skips)
+    image = compile_source(pasm_program(seed), f"steady_pasm{seed}.spin").binary
+    chip = assert_same(image, 200_000_000)
+    assert chip._steady.skips >= 1
