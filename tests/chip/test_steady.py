@@ -67,6 +67,16 @@ def test_a_blinking_led_and_a_pwm_cog_run_the_same_skipping_their_periods():
     assert chip.result().stats["steady_periods_skipped"] == chip._steady.periods
 
 
+# a second cog driving a 1 kHz PWM with 30 % duty on P1 (10 kHz steps)
+PWM_1KHZ = """PRI pwm | t, i
+  dira[1]~~
+  t := cnt
+  repeat
+    repeat i from 0 to 9
+      outa[1] := i < 3
+      waitcnt(t += clkfreq / 10_000)
+"""
+
 SLOW_AND_FAST = """CON
   _clkmode = xtal1 + pll16x
   _xinfreq = 5_000_000
@@ -79,14 +89,7 @@ PUB main | t
   repeat
     !outa[0]
     waitcnt(t += clkfreq / 4)
-PRI pwm | t, i
-  dira[1]~~
-  t := cnt
-  repeat
-    repeat i from 0 to 9
-      outa[1] := i < 3
-      waitcnt(t += clkfreq / 10_000)
-"""
+""" + PWM_1KHZ
 
 
 def test_a_fast_cog_is_skipped_while_a_slow_one_sleeps_and_the_slow_one_still_wakes_on_time():
@@ -244,14 +247,7 @@ PUB main | t, n
     waitcnt(t += clkfreq / 2)
     if ++n == 4
       mailbox := 1
-PRI pwm | t, i
-  dira[1]~~
-  t := cnt
-  repeat
-    repeat i from 0 to 9
-      outa[1] := i < 3
-      waitcnt(t += clkfreq / 10_000)
-DAT
+""" + PWM_1KHZ + """DAT
         org     0
 poll    rdlong  x, par wz
   if_z  jmp     #poll
