@@ -10,8 +10,9 @@ from __future__ import annotations
 
 import itertools
 import os
+import zlib
 
-__all__ = ["create_beside", "write_atomic", "cache_base"]
+__all__ = ["create_beside", "write_atomic", "cache_base", "cache_name", "write_cache_file"]
 
 _serial = itertools.count()
 
@@ -57,3 +58,24 @@ def cache_base() -> str | None:
         xdg = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
         base = os.path.join(xdg, "spinemu")
     return base
+
+
+def cache_name(data: bytes, ext: str) -> str:
+    """A cache file's name for the key ``data``: its checksums and length (a clash just misses: each
+    cache checks that an entry is for what it looks up)."""
+    return f"{zlib.crc32(data):08x}{zlib.adler32(data):08x}{len(data):x}{ext}"
+
+
+def write_cache_file(path: str, data: bytes, keep: int = 0) -> None:
+    """Write a cache file whole or not at all (its folder made if need be); with ``keep``, then remove
+    the least recently used files of its folder with its extension past ``keep``.  Raises OSError."""
+    folder = os.path.dirname(path)
+    os.makedirs(folder, exist_ok=True)
+    write_atomic(path, data)
+    if keep:
+        ext = os.path.splitext(path)[1]
+        files = [os.path.join(folder, n) for n in os.listdir(folder) if n.endswith(ext)]
+        if len(files) > keep:
+            files.sort(key=os.path.getmtime)
+            for p in files[:len(files) - keep]:
+                os.unlink(p)

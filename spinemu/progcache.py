@@ -126,9 +126,8 @@ def _entry_path(key: tuple):
     base = cache_base()
     if base is None:
         return None
-    data = repr(key).encode("utf-8", "surrogateescape")
-    return os.path.join(base, f"programs-{key[1]}",
-                        f"{zlib.crc32(data):08x}{zlib.adler32(data):08x}{len(data):x}.pickle")
+    from .fileio import cache_name
+    return os.path.join(base, f"programs-{key[1]}", cache_name(repr(key).encode("utf-8", "surrogateescape"), ".pickle"))
 
 
 def _load(entry: str, key: tuple):
@@ -150,7 +149,7 @@ def _load(entry: str, key: tuple):
 
 
 def _save(entry: str, key: tuple, prog) -> None:
-    from .fileio import create_beside
+    from .fileio import write_cache_file
 
     search = prog.objects[0].unit.search if prog.objects else None
     if search is None:
@@ -164,26 +163,10 @@ def _save(entry: str, key: tuple, prog) -> None:
         "warnings": list(prog.warnings), "labels": prog.dat_labels(), "symbols": prog.dat_symbols(),
         "debug": prog.debug_info(),
     }
-    folder = os.path.dirname(entry)
-    tmp = None
     try:
-        data = pickle.dumps(saved, protocol=pickle.HIGHEST_PROTOCOL)
-        os.makedirs(folder, exist_ok=True)
-        fd, tmp = create_beside(entry)
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-        os.replace(tmp, entry)
-        tmp = None
-        files = [os.path.join(folder, n) for n in os.listdir(folder) if n.endswith(".pickle")]
-        if len(files) > KEEP:
-            files.sort(key=os.path.getmtime)
-            for p in files[:len(files) - KEEP]:
-                os.unlink(p)
+        write_cache_file(entry, pickle.dumps(saved, protocol=pickle.HIGHEST_PROTOCOL), KEEP)
     except (OSError, pickle.PicklingError, TypeError, AttributeError):
         pass                        # (a cache that cannot be written is skipped)
-    finally:
-        if tmp is not None and os.path.exists(tmp):
-            os.unlink(tmp)
 
 
 def compile_cached(path: str, include_dirs=(), defines=()):

@@ -48,3 +48,16 @@ def test_create_beside_takes_the_next_name_when_one_exists(tmp_path):
     os.close(fd1)
     os.close(fd2)
     assert a != b and os.path.dirname(a) == os.path.dirname(b) == str(tmp_path)
+
+
+def test_a_cache_file_write_keeps_the_most_recently_used_of_its_kind(tmp_path):
+    from spinemu.fileio import cache_name, write_cache_file
+
+    folder = tmp_path / "cache"
+    for i in range(4):
+        write_cache_file(str(folder / f"{i}.marshal"), b"x", keep=3)
+        os.utime(folder / f"{i}.marshal", (1000 + i, 1000 + i))
+    (folder / "other.pickle").write_bytes(b"y")
+    write_cache_file(str(folder / "4.marshal"), b"z", keep=3)
+    assert sorted(os.listdir(folder)) == ["2.marshal", "3.marshal", "4.marshal", "other.pickle"]
+    assert cache_name(b"abc", ".pickle") == cache_name(b"abc", ".pickle") != cache_name(b"abd", ".pickle")

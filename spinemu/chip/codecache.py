@@ -20,7 +20,6 @@ from __future__ import annotations
 import marshal
 import os
 import sys
-import zlib
 
 __all__ = ["CodeCache", "for_image", "cache_dir", "KEEP"]
 
@@ -45,8 +44,9 @@ def for_image(image: bytes) -> "CodeCache" | None:
     d = cache_dir()
     if d is None:
         return None
-    data = bytes(image)             # (a name only: entries are found by their source, so a clash just misses)
-    return CodeCache(os.path.join(d, f"{zlib.crc32(data):08x}{zlib.adler32(data):08x}{len(data):x}.marshal"))
+    from ..fileio import cache_name
+    # (a name only: entries are found by their source, so a clash just misses)
+    return CodeCache(os.path.join(d, cache_name(bytes(image), ".marshal")))
 
 
 class CodeCache:
@@ -108,24 +108,14 @@ class CodeCache:
         """Write the cache if this run compiled something new (errors are ignored)."""
         if not self._dirty:
             return
-        from ..fileio import create_beside
+        from ..fileio import write_cache_file
 
         if self._generators:        # the blocks and code objects only other generators made go
             self.blocks = {g: v for g, v in self.blocks.items() if g in self._generators}
             sources = {made[0] for v in self.blocks.values() for lst in v.values() for _, made in lst}
             self.codes = {k: c for k, c in self.codes.items() if k in self._used or k[0] in sources}
-        d = os.path.dirname(self.path)
         try:
-            os.makedirs(d, exist_ok=True)
-            fd, tmp = create_beside(self.path)
-            with os.fdopen(fd, "wb") as f:
-                f.write(marshal.dumps((_FORMAT, self.codes, self.blocks)))
-            os.replace(tmp, self.path)
+            write_cache_file(self.path, marshal.dumps((_FORMAT, self.codes, self.blocks)), KEEP)
             self._dirty = False
-            files = [os.path.join(d, n) for n in os.listdir(d) if n.endswith(".marshal")]
-            if len(files) > KEEP:
-                files.sort(key=os.path.getmtime)
-                for p in files[:len(files) - KEEP]:
-                    os.unlink(p)
         except OSError:
             pass

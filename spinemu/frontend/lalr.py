@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import os
 import pickle
-import zlib
 from typing import Callable, Optional
 
 __all__ = ["Tables", "Parser", "ParseFailure", "grammar_path", "load_tables", "START_RULES"]
@@ -119,9 +118,8 @@ def load_tables(path=None, use_cache: bool = True) -> Tables:
     with open(path or _grammar_file(), encoding="utf-8") as fh:
         text = fh.read()
     data = f"{_FORMAT}\0{text}".encode()
-    key = f"{zlib.crc32(data):08x}{zlib.adler32(data):08x}{len(data):x}"
-    folder = _cache_dir()
-    cache = os.path.join(folder, f"spin-{key}.lalr.pickle")
+    from ..fileio import cache_name
+    cache = os.path.join(_cache_dir(), "spin-" + cache_name(data, ".lalr.pickle"))
     if use_cache:
         try:
             with open(cache, "rb") as fh:
@@ -130,14 +128,10 @@ def load_tables(path=None, use_cache: bool = True) -> Tables:
             pass
     tables = _build_tables(text)
     if use_cache:
-        from ..fileio import create_beside
+        from ..fileio import write_cache_file
 
         try:
-            os.makedirs(folder, exist_ok=True)
-            fd, tmp = create_beside(cache)
-            with os.fdopen(fd, "wb") as fh:
-                pickle.dump(tables, fh, protocol=pickle.HIGHEST_PROTOCOL)
-            os.replace(tmp, cache)
+            write_cache_file(cache, pickle.dumps(tables, protocol=pickle.HIGHEST_PROTOCOL))
         except OSError:
             pass
     return tables
