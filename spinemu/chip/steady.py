@@ -518,6 +518,11 @@ def _idle_pasm(k) -> bool:
     return k.state == PARKED and k.engine.__class__ is not str and k.busy is not None
 
 
+def _asleep_only_idle_pasm(chip) -> bool:
+    """Are the chip's parked loops and pin waits all of PASM cogs in idle loops (none of Spin cogs)?"""
+    return all(_idle_pasm(k) for k in chip._parked) and all(_idle_pasm(k) for k in chip._pin_waiters)
+
+
 def _snapshot(chip):
     """Every cog's state (its time apart: :func:`_times`), or None where no period may start."""
     if chip._pend or chip._ahead:
@@ -595,7 +600,7 @@ class SteadySkip:
                 or chip.pin_listeners or chip._preempt or chip._halt_reason is not None):
             return False
         # (parked busy loops and pin waits only of PASM cogs in idle loops: they sleep through it)
-        if any(not _idle_pasm(k) for k in chip._parked) or any(not _idle_pasm(k) for k in chip._pin_waiters):
+        if not _asleep_only_idle_pasm(chip):
             return False
         if any(rewrap is None for _, rewrap in chip._wraps):  # (a tool's wrapper the recording cannot copy)
             return False
@@ -758,8 +763,7 @@ class SteadySkip:
                 running = [k for k in cogs if k.state == RUNNING]
                 if any(k.engine.__class__ is not str for k in running) \
                         or any(k.running and k.state != RUNNING and not _idle_pasm(k) for k in cogs) \
-                        or any(not _idle_pasm(k) for k in chip._parked) \
-                        or any(not _idle_pasm(k) for k in chip._pin_waiters):
+                        or not _asleep_only_idle_pasm(chip):
                     return None
                 # a PASM cog in an idle loop: its horizon is its next event (the scheduler's to run)
                 sleeper = min((chip._key(k) for k in cogs if _idle_pasm(k)), default=INFINITE)
